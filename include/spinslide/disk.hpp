@@ -1,0 +1,401 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file disk.hpp
+/// The uniformly pressed disk of Farkas, Bartels, Unger & Wolf (2003):
+/// dimensionless friction force 𝓕(ε), friction torque 𝓣(ε) and their
+/// derivatives, as functions of the ratio ε = v/(Rω).
+///
+/// Every branch below is derived in docs/theory.md; "theory (n)" in a comment
+/// names the equation there.
+
+#ifndef SPINSLIDE_DISK_HPP
+#define SPINSLIDE_DISK_HPP
+
+#include <boost/cstdint.hpp>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/policies/error_handling.hpp>
+#include <boost/math/policies/policy.hpp>
+#include <boost/math/special_functions/ellint_rd.hpp>
+#include <boost/math/special_functions/ellint_rf.hpp>
+#include <boost/math/special_functions/fpclassify.hpp>
+#include <boost/math/tools/precision.hpp>
+#include <boost/math/tools/promotion.hpp>
+#include <boost/math/tools/series.hpp>
+
+namespace spinslide {
+
+/// 𝓕(ε) and 𝓣(ε) at one ε, as returned by force_torque().
+/// `force` is in units of μF_n, `torque` in units of μF_n R.
+template <class Real>
+struct force_torque_result {
+  Real force;
+  Real torque;
+};
+
+namespace detail {
+
+// The state shared by 𝓕, 𝓣 and 𝓕' at one ε (theory, "Evaluation").
+//
+// With k = min(ε, 1/ε), m = k² and y = 1 − m, the complete elliptic
+// integrals enter only through Carlson's symmetric forms (DLMF 19.25.1):
+//   K = R_F(0, y, 1),
+//   D = R_D(0, y, 1)            = 3 (K − E) / m,
+//   B = (m y / 3) R_D(0, 1, y)  = E − y K.
+// Each closed form is written with whichever of D or B makes it a sum of
+// like-signed terms, so that the log(1/k') divergence of K never cancels.
+template <class T>
+struct disk_state {
+  T eps{};           // ε ≥ 0, finite
+  T k{};             // min(ε, 1/ε)
+  T m{};             // k²
+  bool above_one{};  // ε > 1, so k = 1/ε
+  bool series{};     // ε > 1 and m small: the series in 1/ε², no elliptic integrals
+  bool uses_b{};     // the pair (K, B); otherwise (K, D)
+  T K{};             // R_F(0, y, 1); unused by the series
+  T yK{};            // y·K, exactly 0 at ε = 1 where K diverges
+  T aux{};           // B or D, according to uses_b
+};
+
+// Where the series in m = 1/ε² takes over above ε = 1.  The closed forms of
+// 𝓣 and 𝓕' there lose about log2(1/m) bits to cancellation (theory, "Where
+// the closed forms cancel").  When the evaluation type carries at least 8
+// guard bits over the result type (double evaluated in long double, float in
+// double) that loss is invisible down to m = 1/8; otherwise the closed forms
+// are kept only for m > 1/2, where the loss is under 2 bits.
+template <class Result, class T>
+T series_threshold() {
+  return boost::math::tools::digits<T>() >= boost::math::tools::digits<Result>() + 8 ? T(0.125)
+                                                                                     : T(0.5);
+}
+
+template <class T, class Policy>
+disk_state<T> make_disk_state(T eps, T series_below, const Policy& pol) {
+  disk_state<T> s;
+  s.eps = eps;
+  s.above_one = eps > 1;
+  s.k = s.above_one ? T(1 / eps) : eps;
+  s.m = s.k * s.k;
+  s.series = s.above_one && s.m <= series_below;
+  s.uses_b = s.above_one || s.m > T(0.5);
+  if (s.series) return s;
+  // 1 − k² as a product keeps its full relative accuracy as k → 1.
+  const T y = (1 - s.k) * (1 + s.k);
+  if (y == 0) {
+    // ε = 1: K = ∞, but y·K → 0 and B → E(1) = 1 (DLMF 19.6.1).
+    s.uses_b = true;
+    s.aux = 1;
+    return s;
+  }
+  s.K = boost::math::ellint_rf(T(0), y, T(1), pol);
+  s.yK = y * s.K;
+  s.aux = s.uses_b ? T(s.m * y / 3 * boost::math::ellint_rd(T(0), T(1), y, pol))
+                   : T(boost::math::ellint_rd(T(0), y, T(1), pol));
+  return s;
+}
+
+// a_n m^n with a_n = ((1/2)_n / n!)², the coefficients of K = (π/2) Σ a_n m^n
+// (DLMF 19.5.1); every series below is a_n m^n times a rational in n.
+template <class T>
+struct elliptic_coefficients {
+  explicit elliptic_coefficients(T m) : m_(m) {}
+  // Returns a_n m^n for n = 0, 1, 2, ... on successive calls, and n.
+  T next() {
+    if (n_ > 0) {
+      const T r = T(2 * n_ - 1) / T(2 * n_);
+      c_ *= m_ * r * r;
+    }
+    ++n_;
+    return c_;
+  }
+  int n() const { return n_ - 1; }
+
+ private:
+  T m_;
+  T c_ = 1;
+  int n_ = 0;
+};
+
+// 𝓕(ε) − 1 for ε > 1: Σ_{n≥1} a_n m^n / ((n+1)(1−2n)), m = 1/ε² (theory (S3)).
+template <class T>
+struct force_series {
+  using result_type = T;
+  explicit force_series(T m) : c(m) { c.next(); }
+  T operator()() {
+    const T cn = c.next();
+    const int n = c.n();
+    return cn / T((n + 1) * (1 - 2 * n));
+  }
+  elliptic_coefficients<T> c;
+};
+
+// 𝓣(ε) / k for ε > 1: Σ_{n≥0} a_n m^n / (2(n+1)(n+2)) (theory (S4)).
+template <class T>
+struct torque_series {
+  using result_type = T;
+  explicit torque_series(T m) : c(m) {}
+  T operator()() {
+    const T cn = c.next();
+    const int n = c.n();
+    return cn / T(2 * (n + 1) * (n + 2));
+  }
+  elliptic_coefficients<T> c;
+};
+
+// 𝓕'(ε) / k = −𝓣'(ε) for ε > 1: Σ_{n≥1} 2n a_n m^n / ((n+1)(2n−1)) (theory (S5)).
+template <class T>
+struct force_derivative_series {
+  using result_type = T;
+  explicit force_derivative_series(T m) : c(m) { c.next(); }
+  T operator()() {
+    const T cn = c.next();
+    const int n = c.n();
+    return cn * T(2 * n) / T((n + 1) * (2 * n - 1));
+  }
+  elliptic_coefficients<T> c;
+};
+
+template <class Series, class T, class Policy>
+T sum(Series series, T init, const char* function, const Policy& pol) {
+  boost::uintmax_t max_terms = boost::math::policies::get_max_series_iterations<Policy>();
+  const T result = boost::math::tools::sum_series(
+      series, boost::math::policies::get_epsilon<T, Policy>(), max_terms, init);
+  boost::math::policies::check_series_iterations<T>(function, max_terms, pol);
+  return result;
+}
+
+template <class T, class Policy>
+T force_imp(const disk_state<T>& s, const char* function, const Policy& pol) {
+  using boost::math::constants::pi;
+  const T m = s.m;
+  if (s.series) return sum(force_series<T>(m), T(1), function, pol);
+  if (s.above_one)  // theory (C1b)
+    return 4 * (m * s.yK + (1 + m) * s.aux) / (3 * pi<T>() * m);
+  if (s.uses_b)  // theory (C1a)
+    return 4 * (m * s.yK + (1 + m) * s.aux) / (3 * pi<T>() * s.k);
+  return 4 * s.k * (2 * s.K - (1 + m) * s.aux / 3) / (3 * pi<T>());  // theory (C1d)
+}
+
+template <class T, class Policy>
+T torque_imp(const disk_state<T>& s, const char* function, const Policy& pol) {
+  using boost::math::constants::pi;
+  const T m = s.m;
+  if (s.series) return s.k * sum(torque_series<T>(m), T(0), function, pol);
+  if (s.above_one)  // theory (C2b), the corrected form
+    return 4 * (m * s.yK + (4 * m - 2) * s.aux) / (9 * pi<T>() * s.k * m);
+  if (s.uses_b)  // theory (C2a)
+    return 4 * ((3 - 2 * m) * s.yK + (4 - 2 * m) * s.aux) / (9 * pi<T>());
+  return 4 * ((3 - m) * s.K - (4 - 2 * m) * m * s.aux / 3) / (9 * pi<T>());  // theory (C2d)
+}
+
+// 𝓕'(ε) and, from the identity 𝓣'(ε) = −ε 𝓕'(ε) (theory (I2)), 𝓣'(ε).
+// For ε > 1 the common factor is kept apart so that 𝓣' = −(𝓕' core)/k² needs
+// no multiplication by a rounded ε.
+template <class T, class Policy>
+T force_derivative_imp(const disk_state<T>& s, bool torque, const char* function,
+                       const Policy& pol) {
+  using boost::math::constants::pi;
+  const T m = s.m;
+  if (s.above_one) {
+    // 𝓕' = k · core and 𝓣' = −core, with core the series (S5) or (C3b).
+    T core;
+    if (s.series) {
+      core = sum(force_derivative_series<T>(m), T(0), function, pol);
+    } else {
+      core = 4 * ((2 - m) * s.aux - m * s.yK) / (3 * pi<T>() * m);
+    }
+    return torque ? T(-core) : T(s.k * core);
+  }
+  T fd;
+  if (s.uses_b)  // theory (C3a)
+    fd = 4 * (2 * m * s.yK + (2 * m - 1) * s.aux) / (3 * pi<T>() * m);
+  else  // theory (C3d)
+    fd = 4 * (s.K + (1 - 2 * m) * s.aux / 3) / (3 * pi<T>());
+  return torque ? T(-s.eps * fd) : fd;
+}
+
+enum class disk_quantity { force, torque, force_derivative, torque_derivative };
+
+// NaN or ε < 0: a domain error through the policy.  Checked in the caller's
+// own type, before promotion, so that the message names that type.
+template <class T, class Policy>
+bool domain_error_ratio(T eps, const char* function, T& result, const Policy& pol) {
+  if ((boost::math::isnan)(eps) || eps < 0) {
+    result = boost::math::policies::raise_domain_error<T>(
+        function, "Got eps = %1%, but the ratio eps = v/(R omega) must be >= 0.", eps, pol);
+    return true;
+  }
+  return false;
+}
+
+// Pure spinning (ε = 0, including −0.0) and pure sliding (ε = +∞).
+template <class T>
+bool disk_limit_value(T eps, disk_quantity q, T& result) {
+  if (eps == 0) {
+    switch (q) {
+      case disk_quantity::force:
+        result = 0;
+        break;
+      case disk_quantity::torque:
+        result = T(2) / 3;
+        break;
+      case disk_quantity::force_derivative:
+        result = 1;
+        break;
+      case disk_quantity::torque_derivative:
+        result = 0;
+        break;
+    }
+    return true;
+  }
+  if ((boost::math::isinf)(eps)) {
+    result = q == disk_quantity::force ? T(1) : T(0);
+    return true;
+  }
+  return false;
+}
+
+template <class T, class Policy>
+T disk_imp(T eps, disk_quantity q, T series_below, const char* function, const Policy& pol) {
+  T limit = 0;
+  if (disk_limit_value(eps, q, limit)) return limit;
+  const disk_state<T> s = make_disk_state(eps, series_below, pol);
+  switch (q) {
+    case disk_quantity::force:
+      return force_imp(s, function, pol);
+    case disk_quantity::torque:
+      return torque_imp(s, function, pol);
+    case disk_quantity::force_derivative:
+      return force_derivative_imp(s, false, function, pol);
+    case disk_quantity::torque_derivative:
+      return force_derivative_imp(s, true, function, pol);
+  }
+  return limit;  // unreachable
+}
+
+// The Boost.Math calling convention: promote the argument, evaluate in the
+// policy's evaluation type (double → long double by default), narrow back.
+template <class T, class Policy>
+struct disk_types {
+  using result_type = typename boost::math::tools::promote_args<T>::type;
+  using value_type = typename boost::math::policies::evaluation<result_type, Policy>::type;
+  using forwarding_policy =
+      typename boost::math::policies::normalise<Policy, boost::math::policies::promote_float<false>,
+                                                boost::math::policies::promote_double<false>,
+                                                boost::math::policies::discrete_quantile<>,
+                                                boost::math::policies::assert_undefined<>>::type;
+};
+
+template <class T, class Policy>
+typename disk_types<T, Policy>::result_type disk_public(T eps, disk_quantity q,
+                                                        const char* function, const Policy&) {
+  using types = disk_types<T, Policy>;
+  using result_type = typename types::result_type;
+  using value_type = typename types::value_type;
+  const typename types::forwarding_policy pol;
+  result_type invalid;
+  if (domain_error_ratio(static_cast<result_type>(eps), function, invalid, pol)) return invalid;
+  const value_type v = disk_imp(static_cast<value_type>(eps), q,
+                                series_threshold<result_type, value_type>(), function, pol);
+  return boost::math::policies::checked_narrowing_cast<result_type,
+                                                       typename types::forwarding_policy>(v,
+                                                                                          function);
+}
+
+}  // namespace detail
+
+/// 𝓕(ε): the friction force on a uniformly pressed disk, in units of μF_n,
+/// directed against the velocity.  𝓕(0) = 0, 𝓕(1) = 8/(3π), 𝓕(∞) = 1.
+///
+/// \param eps the ratio ε = v/(Rω) ≥ 0; +∞ is pure sliding.
+/// \param pol a Boost.Math policy; NaN or ε < 0 is a domain error through it
+///            (by default `std::domain_error`).
+/// Integer arguments are computed in double.  Accuracy: see docs/accuracy.md.
+template <class T, class Policy>
+typename boost::math::tools::promote_args<T>::type force(T eps, const Policy& pol) {
+  return detail::disk_public(eps, detail::disk_quantity::force, "spinslide::force<%1%>(%1%)", pol);
+}
+/// 𝓕(ε) with the default policy.
+template <class T>
+typename boost::math::tools::promote_args<T>::type force(T eps) {
+  return force(eps, boost::math::policies::policy<>());
+}
+
+/// 𝓣(ε): the friction torque on a uniformly pressed disk, in units of μF_n R,
+/// directed against the spin.  𝓣(0) = 2/3, 𝓣(1) = 8/(9π), 𝓣(ε) ~ 1/(4ε) as ε → ∞.
+/// Parameters and errors as for force().
+template <class T, class Policy>
+typename boost::math::tools::promote_args<T>::type torque(T eps, const Policy& pol) {
+  return detail::disk_public(eps, detail::disk_quantity::torque, "spinslide::torque<%1%>(%1%)",
+                             pol);
+}
+/// 𝓣(ε) with the default policy.
+template <class T>
+typename boost::math::tools::promote_args<T>::type torque(T eps) {
+  return torque(eps, boost::math::policies::policy<>());
+}
+
+/// d𝓕/dε.  𝓕'(0) = 1, 𝓕'(1) = 4/(3π), 𝓕'(ε) ~ 1/(4ε³) as ε → ∞.
+/// Parameters and errors as for force().
+template <class T, class Policy>
+typename boost::math::tools::promote_args<T>::type force_derivative(T eps, const Policy& pol) {
+  return detail::disk_public(eps, detail::disk_quantity::force_derivative,
+                             "spinslide::force_derivative<%1%>(%1%)", pol);
+}
+/// d𝓕/dε with the default policy.
+template <class T>
+typename boost::math::tools::promote_args<T>::type force_derivative(T eps) {
+  return force_derivative(eps, boost::math::policies::policy<>());
+}
+
+/// d𝓣/dε = −ε d𝓕/dε.  𝓣'(0) = 0, 𝓣'(1) = −4/(3π), 𝓣'(ε) ~ −1/(4ε²) as ε → ∞.
+/// Parameters and errors as for force().
+template <class T, class Policy>
+typename boost::math::tools::promote_args<T>::type torque_derivative(T eps, const Policy& pol) {
+  return detail::disk_public(eps, detail::disk_quantity::torque_derivative,
+                             "spinslide::torque_derivative<%1%>(%1%)", pol);
+}
+/// d𝓣/dε with the default policy.
+template <class T>
+typename boost::math::tools::promote_args<T>::type torque_derivative(T eps) {
+  return torque_derivative(eps, boost::math::policies::policy<>());
+}
+
+/// 𝓕(ε) and 𝓣(ε) together: one evaluation of the elliptic integrals serves
+/// both.  Parameters and errors as for force(); the error names force_torque.
+template <class T, class Policy>
+force_torque_result<typename boost::math::tools::promote_args<T>::type> force_torque(
+    T eps, const Policy&) {
+  using types = detail::disk_types<T, Policy>;
+  using result_type = typename types::result_type;
+  using value_type = typename types::value_type;
+  using forwarding_policy = typename types::forwarding_policy;
+  static const char* function = "spinslide::force_torque<%1%>(%1%)";
+  const forwarding_policy pol;
+  result_type invalid;
+  if (detail::domain_error_ratio(static_cast<result_type>(eps), function, invalid, pol))
+    return {invalid, invalid};
+  const value_type e = static_cast<value_type>(eps);
+  value_type f, t;
+  if (detail::disk_limit_value(e, detail::disk_quantity::force, f)) {
+    detail::disk_limit_value(e, detail::disk_quantity::torque, t);
+  } else {
+    const detail::disk_state<value_type> s =
+        detail::make_disk_state(e, detail::series_threshold<result_type, value_type>(), pol);
+    f = detail::force_imp(s, function, pol);
+    t = detail::torque_imp(s, function, pol);
+  }
+  using boost::math::policies::checked_narrowing_cast;
+  return {checked_narrowing_cast<result_type, forwarding_policy>(f, function),
+          checked_narrowing_cast<result_type, forwarding_policy>(t, function)};
+}
+/// 𝓕(ε) and 𝓣(ε) together, with the default policy.
+template <class T>
+force_torque_result<typename boost::math::tools::promote_args<T>::type> force_torque(T eps) {
+  return force_torque(eps, boost::math::policies::policy<>());
+}
+
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_DISK_HPP

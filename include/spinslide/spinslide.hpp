@@ -1,0 +1,13 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file spinslide.hpp
+/// Umbrella header: includes every public spinslide header.
+
+#ifndef SPINSLIDE_SPINSLIDE_HPP
+#define SPINSLIDE_SPINSLIDE_HPP
+
+#include <spinslide/disk.hpp>
+
+#endif  // SPINSLIDE_SPINSLIDE_HPP
