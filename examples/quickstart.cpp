@@ -6,8 +6,6 @@
 // ε = v/(Rω), and the limits stated by Farkas, Bartels, Unger & Wolf (2003).
 #include <spinslide/spinslide.hpp>
 
-#include <boost/math/constants/constants.hpp>
-
 #include <cstdio>
 #include <limits>
 
@@ -24,23 +22,21 @@ int main() {
                 spinslide::force_derivative(eps), spinslide::torque_derivative(eps));
   }
 
-  const double pi = boost::math::constants::pi<double>();
-  std::printf("\nThe paper's limits, computed / exact:\n");
-  std::printf("  F(0)   = %.17g   (0)\n", spinslide::force(0.0));
-  std::printf("  T(0)   = %.17g   (2/3     = %.17g)\n", spinslide::torque(0.0), 2.0 / 3.0);
-  std::printf("  F(1)   = %.17g   (8/(3pi) = %.17g)\n", spinslide::force(1.0), 8 / (3 * pi));
-  std::printf("  T(1)   = %.17g   (8/(9pi) = %.17g)\n", spinslide::torque(1.0), 8 / (9 * pi));
-  std::printf("  F'(1)  = %.17g   (4/(3pi) = %.17g)\n", spinslide::force_derivative(1.0),
-              4 / (3 * pi));
-  std::printf("  T'(1)  = %.17g   (-4/(3pi) = %.17g)\n", spinslide::torque_derivative(1.0),
-              -4 / (3 * pi));
-  std::printf("  F(inf) = %.17g   (1)\n",
-              spinslide::force(std::numeric_limits<double>::infinity()));
-  std::printf("  T(inf) = %.17g   (0)\n",
-              spinslide::torque(std::numeric_limits<double>::infinity()));
-  std::printf(
-      "  T(1e6) = %.17g   (~ 1/(4 eps) = %.17g; the printed closed form cancels to 0 here)\n",
-      spinslide::torque(1e6), 0.25e-6);
+  // The exact values, to 20 digits, for comparison.
+  std::printf("\nThe paper's limits, computed | exact:\n");
+  std::printf("  F(0)   = %.17g | 0\n", spinslide::force(0.0));
+  std::printf("  T(0)   = %.17g | 2/3      = 0.66666666666666666667\n", spinslide::torque(0.0));
+  std::printf("  F(1)   = %.17g | 8/(3pi)  = 0.84882636315677512410\n", spinslide::force(1.0));
+  std::printf("  T(1)   = %.17g | 8/(9pi)  = 0.28294212105225837470\n", spinslide::torque(1.0));
+  std::printf("  F'(1)  = %.17g | 4/(3pi)  = 0.42441318157838756205\n",
+              spinslide::force_derivative(1.0));
+  std::printf("  T'(1)  = %.17g | -4/(3pi) = -0.42441318157838756205\n",
+              spinslide::torque_derivative(1.0));
+  const double inf = std::numeric_limits<double>::infinity();
+  std::printf("  F(inf) = %.17g | 1\n", spinslide::force(inf));
+  std::printf("  T(inf) = %.17g | 0\n", spinslide::torque(inf));
+  std::printf("  T(1e6) = %.17g | 1/(4eps) + 1/(48eps^3) = 2.5000000000000002083e-07\n",
+              spinslide::torque(1e6));
 
   std::printf("\nBad input is a domain error: ");
   try {

@@ -127,13 +127,13 @@ constexpr std::array<range, 4> all_ranges = {range::below_1e_3, range::middle, r
 inline const char* name(range r) {
   switch (r) {
     case range::below_1e_3:
-      return "eps < 1e-3";
+      return "ε < 1e-3";
     case range::middle:
-      return "1e-3 <= eps <= 1e3";
+      return "1e-3 ≤ ε ≤ 1e3";
     case range::above_1e3:
-      return "eps > 1e3";
+      return "ε > 1e3";
     case range::near_one:
-      return "|eps - 1| < 1e-6";
+      return "ε within 1e-6 of 1";
   }
   return "?";
 }

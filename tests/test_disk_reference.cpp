@@ -7,6 +7,9 @@
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <string>
+#include <type_traits>
+
 #include "reference_table.hpp"
 
 namespace {
@@ -36,7 +39,16 @@ template <class Real>
 class DiskReference : public ::testing::Test {};
 
 using Types = ::testing::Types<float, double, long double, boost::multiprecision::cpp_bin_float_50>;
-TYPED_TEST_SUITE(DiskReference, Types);
+struct TypeNames {
+  template <class T>
+  static std::string GetName(int) {
+    if (std::is_same<T, float>::value) return "float";
+    if (std::is_same<T, double>::value) return "double";
+    if (std::is_same<T, long double>::value) return "long_double";
+    return "cpp_bin_float_50";
+  }
+};
+TYPED_TEST_SUITE(DiskReference, Types, TypeNames);
 
 TYPED_TEST(DiskReference, TableCoversTheRequiredRange) {
   const auto& t = rows();
