@@ -1,0 +1,57 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//
+// A Google Benchmark console reporter that also prints, at the end, every
+// benchmark's time per item as a ratio to one baseline benchmark measured in
+// the same run.  Use from a benchmark program's main():
+//   spinslide_bench::ratio_reporter reporter("baseline_name");
+//   benchmark::RunSpecifiedBenchmarks(&reporter);
+#ifndef SPINSLIDE_BENCHMARKS_RATIO_REPORTER_HPP
+#define SPINSLIDE_BENCHMARKS_RATIO_REPORTER_HPP
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace spinslide_bench {
+
+class ratio_reporter : public benchmark::ConsoleReporter {
+ public:
+  explicit ratio_reporter(std::string baseline) : baseline_(std::move(baseline)) {}
+
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      if (r.run_type != Run::RT_Iteration || r.error_occurred) continue;
+      const auto items = r.counters.find("items_per_second");
+      if (items == r.counters.end() || items->second.value <= 0) continue;
+      results_.emplace_back(r.benchmark_name(), 1e9 / items->second.value);
+    }
+  }
+
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    double base = 0;
+    for (const auto& r : results_)
+      if (r.first == baseline_) base = r.second;
+    std::printf("\n%-52s %12s %14s\n", "benchmark", "ns per item", "vs baseline");
+    for (const auto& r : results_) {
+      if (base > 0)
+        std::printf("%-52s %12.2f %13.3gx\n", r.first.c_str(), r.second, base / r.second);
+      else
+        std::printf("%-52s %12.2f %14s\n", r.first.c_str(), r.second, "(no baseline)");
+    }
+    std::printf("baseline: %s; 'Nx' means N times faster than the baseline.\n", baseline_.c_str());
+  }
+
+ private:
+  std::string baseline_;
+  std::vector<std::pair<std::string, double>> results_;
+};
+
+}  // namespace spinslide_bench
+
+#endif  // SPINSLIDE_BENCHMARKS_RATIO_REPORTER_HPP
