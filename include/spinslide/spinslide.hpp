@@ -8,6 +8,10 @@
 #ifndef SPINSLIDE_SPINSLIDE_HPP
 #define SPINSLIDE_SPINSLIDE_HPP
 
+#include <spinslide/coupling.hpp>
 #include <spinslide/disk.hpp>
+#include <spinslide/profile.hpp>
+#include <spinslide/tabulated.hpp>
+#include <spinslide/terminal.hpp>
 
 #endif  // SPINSLIDE_SPINSLIDE_HPP

@@ -1,0 +1,82 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//
+// Cost of one (𝓕, 𝓣) pair of each built-in profile, by its own method
+// (closed forms or ring quadrature) and tabulated, over 4096 log-uniform ε in
+// [1e-3, 1e3].  Baseline: the uniform disk's closed forms, disk.hpp.
+//   ./build/release/benchmarks/bench_profiles
+#include <benchmark/benchmark.h>
+
+#include <spinslide/spinslide.hpp>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "ratio_reporter.hpp"
+
+namespace {
+
+const std::vector<double>& inputs() {
+  static const std::vector<double> xs = [] {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-3, 3);
+    std::vector<double> v(4096);
+    for (auto& x : v) x = std::pow(10.0, u(rng));
+    return v;
+  }();
+  return xs;
+}
+
+template <class P>
+void pairs(benchmark::State& state, const P& profile) {
+  const auto& xs = inputs();
+  for (auto _ : state) {
+    for (double x : xs) {
+      auto r = profile.force_torque(x);
+      benchmark::DoNotOptimize(r);
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(xs.size()));
+}
+
+template <class P>
+void exact(benchmark::State& state) {
+  pairs(state, P());
+}
+template <class P>
+void tabulated(benchmark::State& state) {
+  static const spinslide::tabulated_profile<> tab{P()};
+  state.counters["pieces"] = static_cast<double>(tab.pieces());
+  pairs(state, tab);
+}
+
+struct cd_annulus : spinslide::annulus<> {
+  cd_annulus() : spinslide::annulus<>(0.125) {}
+};
+struct thin_annulus : spinslide::annulus<> {
+  thin_annulus() : spinslide::annulus<>(0.9) {}
+};
+
+BENCHMARK_TEMPLATE(exact, spinslide::uniform_disk<>);
+BENCHMARK_TEMPLATE(exact, cd_annulus);
+BENCHMARK_TEMPLATE(exact, thin_annulus);
+BENCHMARK_TEMPLATE(exact, spinslide::ring<>);
+BENCHMARK_TEMPLATE(exact, spinslide::hertz<>);
+BENCHMARK_TEMPLATE(exact, spinslide::boussinesq<>);
+BENCHMARK_TEMPLATE(tabulated, spinslide::uniform_disk<>);
+BENCHMARK_TEMPLATE(tabulated, cd_annulus);
+BENCHMARK_TEMPLATE(tabulated, thin_annulus);
+BENCHMARK_TEMPLATE(tabulated, spinslide::ring<>);
+BENCHMARK_TEMPLATE(tabulated, spinslide::hertz<>);
+BENCHMARK_TEMPLATE(tabulated, spinslide::boussinesq<>);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  spinslide_bench::ratio_reporter reporter("exact<spinslide::uniform_disk<>>");
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,104 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file coupling.hpp
+/// The force–torque coupling curve of any profile: the exact limit curve
+/// 𝓣(𝓕) of the contact, and the inverses ε(𝓕) and ε(𝓣).
+///
+/// Both 𝓕 and 𝓣 are strictly monotonic in ε for every profile (docs/theory.md,
+/// (I2): 𝓕′ > 0 and 𝓣′ = −ε𝓕′), so each inverse is a single root, found by
+/// Boost's toms748_solve to full precision.
+
+#ifndef SPINSLIDE_COUPLING_HPP
+#define SPINSLIDE_COUPLING_HPP
+
+#include <spinslide/profile.hpp>
+
+#include <boost/math/tools/roots.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
+
+namespace spinslide {
+
+namespace detail {
+
+// Solves g(ε) = target for a g that is monotonic on [0, ∞), given g's value
+// at 0 (its sup or inf) and the direction.  A bracket [ε/4, ε] or [ε, 4ε] is
+// grown geometrically from ε = 1 (at most ~1100 steps, the exponent range of
+// the type), then refined by TOMS 748 to full precision.
+template <class Real, class G, class Policy>
+Real invert_monotonic(G g, Real target, bool increasing, const char* function, const Policy& pol) {
+  auto f = [&](Real e) { return g(e) - target; };
+  // Sign of f moves from "below" to "above" as ε grows when increasing.
+  auto below = [&](Real e) { return increasing ? f(e) < 0 : f(e) > 0; };
+  Real lo = 1, hi = 1;
+  const Real big = boost::math::tools::max_value<Real>() / 8;
+  const Real tiny = boost::math::tools::min_value<Real>() * 8;
+  if (below(Real(1))) {
+    while (below(hi) && hi < big) hi *= 4;
+    lo = hi / 4;
+  } else {
+    while (!below(lo) && lo > tiny) lo /= 4;
+    hi = lo * 4;
+  }
+  const Real flo = f(lo), fhi = f(hi);
+  if (flo == 0) return lo;
+  if (fhi == 0) return hi;
+  if ((flo < 0) == (fhi < 0))  // target beyond what the type can resolve
+    return boost::math::policies::raise_evaluation_error<Real>(
+        function, "Could not bracket the root for target %1%.", target, pol);
+  boost::uintmax_t max_iter = boost::math::policies::get_max_root_iterations<Policy>();
+  const auto r = boost::math::tools::toms748_solve(
+      f, lo, hi, flo, fhi, boost::math::tools::eps_tolerance<Real>(), max_iter, pol);
+  return (r.first + r.second) / 2;
+}
+
+}  // namespace detail
+
+/// ε(𝓕): the ratio at which `profile` has friction force F.
+/// F = 0 gives 0; F outside [0, 1) or NaN is a domain error (by default
+/// std::domain_error).  Round trip: profile.force(ratio_from_force(p, F)) = F.
+template <class Profile, class Real>
+Real ratio_from_force(const Profile& profile, Real F) {
+  using Policy = typename Profile::policy_type;
+  static const char* function = "spinslide::ratio_from_force<%1%>(profile, %1%)";
+  if (!(F >= 0 && F < 1))
+    return boost::math::policies::raise_domain_error<Real>(
+        function, "Got F = %1%, but the friction force of a profile lies in [0, 1).", F, Policy());
+  if (F == 0) return 0;
+  return detail::invert_monotonic<Real>([&](Real e) { return profile.force(e); }, F, true, function,
+                                        Policy());
+}
+
+/// ε(𝓣): the ratio at which `profile` has friction torque T.
+/// T = ⟨r⟩ gives 0; T outside (0, ⟨r⟩] or NaN is a domain error.
+template <class Profile, class Real>
+Real ratio_from_torque(const Profile& profile, Real T) {
+  using Policy = typename Profile::policy_type;
+  static const char* function = "spinslide::ratio_from_torque<%1%>(profile, %1%)";
+  const Real top = profile.mean_radius();
+  if (!(T > 0 && T <= top))
+    return boost::math::policies::raise_domain_error<Real>(
+        function, "Got T = %1%, but the friction torque of this profile lies in (0, <r>].", T,
+        Policy());
+  if (T == top) return 0;
+  return detail::invert_monotonic<Real>([&](Real e) { return profile.torque(e); }, T, false,
+                                        function, Policy());
+}
+
+/// 𝓣(𝓕): the exact limit curve of the contact, the largest torque that can
+/// act together with force F.  Domain as ratio_from_force; 𝓣(0) = ⟨r⟩.
+template <class Profile, class Real>
+Real torque_at_force(const Profile& profile, Real F) {
+  return profile.torque(ratio_from_force(profile, F));
+}
+
+/// 𝓕(𝓣): the same curve read the other way.  Domain as ratio_from_torque.
+template <class Profile, class Real>
+Real force_at_torque(const Profile& profile, Real T) {
+  return profile.force(ratio_from_torque(profile, T));
+}
+
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_COUPLING_HPP

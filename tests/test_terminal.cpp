@@ -1,0 +1,161 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//
+// The flow of the ratio ε and the terminal regimes (terminal.hpp).
+#include <gtest/gtest.h>
+
+#include <spinslide/spinslide.hpp>
+
+#include <boost/math/special_functions/relative_difference.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include <fstream>
+#include <string>
+
+namespace {
+
+using namespace spinslide;
+using mp = boost::multiprecision::cpp_bin_float_50;
+
+// ε₀ from tests/reference/terminal_ratio.txt: the zero of ε − 𝓕/(2𝓣) with 𝓕,
+// 𝓣 from 100-digit quadrature of the area integrals.
+std::string reference_terminal_ratio() {
+  std::ifstream in(SPINSLIDE_TERMINAL_RATIO_REFERENCE);
+  std::string line;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') return line;
+  throw std::runtime_error("no value in " SPINSLIDE_TERMINAL_RATIO_REFERENCE);
+}
+
+TEST(TerminalRatio, PaperValueToOneUlpInDoubleAnd40DigitsInMultiprecision) {
+  const std::string ref = reference_terminal_ratio();
+  EXPECT_LE(
+      boost::math::epsilon_difference(terminal_ratio<double>(), std::strtod(ref.c_str(), nullptr)),
+      1);
+  EXPECT_LE(boost::math::epsilon_difference(terminal_ratio<long double>(),
+                                            std::strtold(ref.c_str(), nullptr)),
+            4);
+  EXPECT_LE(
+      boost::math::epsilon_difference(terminal_ratio<float>(), std::strtof(ref.c_str(), nullptr)),
+      1);
+  const mp e = terminal_ratio<mp>();
+  EXPECT_LT(abs(e / mp(ref) - 1), mp("1e-40"));
+  EXPECT_EQ(terminal_ratio<double>(), terminal_ratio());  // default is double
+  EXPECT_NEAR(terminal_ratio(), 0.653, 5e-4);             // the paper's "0.653"
+}
+
+TEST(RatioFlow, PaperAsymptotesForHalf) {
+  const uniform_disk<> u;
+  // f(ε) ≈ ε/4 as ε → 0 and ≈ −ε as ε → ∞ (the paper, after Eq. (5)).
+  EXPECT_NEAR(ratio_flow(u, 1e-6, 0.5) / 1e-6, 0.25, 1e-11);
+  EXPECT_NEAR(ratio_flow(u, 1e6, 0.5) / 1e6, -1.0, 1e-11);
+  EXPECT_EQ(ratio_flow(u, 0.0, 0.5), 0.0);
+  // Positive below ε₀, negative above; ε₀ attracts (f′(ε₀) < 0).
+  const double e0 = terminal_ratio();
+  for (double e = 1e-4; e < 1e4; e *= 1.1) {
+    if (std::fabs(e - e0) < 1e-9) continue;
+    EXPECT_EQ(ratio_flow(u, e, 0.5) > 0, e < e0) << e;
+  }
+  EXPECT_LT(ratio_flow(u, e0 + 1e-6, 0.5) - ratio_flow(u, e0 - 1e-6, 0.5), 0);
+}
+
+TEST(RatioFlow, GeneralGammaAsymptotes) {
+  const hertz<> h;
+  for (double g : {0.1, 0.3, 0.7}) {
+    const double a = 1 - g * h.mean_inverse_radius() / (2 * h.mean_radius());
+    const double c = 1 - 2 * g / h.mean_square_radius();
+    EXPECT_NEAR(ratio_flow(h, 1e-6, g) / 1e-6, a, 1e-9) << g;
+    EXPECT_NEAR(ratio_flow(h, 1e6, g) / 1e6, c, 1e-9) << g;
+  }
+}
+
+template <class P>
+void expect_window_edges(const P& p, const char* name) {
+  const auto w = terminal_window(p);
+  ASSERT_LT(w.lower, w.upper) << name;
+  const double d = 1e-6;
+  EXPECT_EQ(terminal_motion(p, w.lower * (1 - d)).regime, terminal_regime::pure_sliding) << name;
+  const auto in_low = terminal_motion(p, w.lower * (1 + d));
+  EXPECT_EQ(in_low.regime, terminal_regime::sliding_and_spinning) << name;
+  EXPECT_GT(in_low.ratio, 10) << name;  // just inside: ε₀ is large
+  const auto in_high = terminal_motion(p, w.upper * (1 - d));
+  EXPECT_EQ(in_high.regime, terminal_regime::sliding_and_spinning) << name;
+  EXPECT_LT(in_high.ratio, 0.1) << name;  // just inside: ε₀ is small
+  EXPECT_EQ(terminal_motion(p, w.upper * (1 + d)).regime, terminal_regime::pure_spinning) << name;
+  // In the window ε₀ is a zero of f and attracts.
+  const double g = (w.lower + w.upper) / 2;
+  const auto t = terminal_motion(p, g);
+  EXPECT_LE(std::fabs(ratio_flow(p, t.ratio, g)), 1e-13 * t.ratio) << name;
+  EXPECT_GT(ratio_flow(p, t.ratio * 0.99, g), 0) << name;
+  EXPECT_LT(ratio_flow(p, t.ratio * 1.01, g), 0) << name;
+}
+
+TEST(TerminalMotion, RegimesOnBothSidesOfEachWindowEdge) {
+  expect_window_edges(uniform_disk<>(), "uniform");
+  expect_window_edges(annulus<>(0.125), "cd");
+  expect_window_edges(hertz<>(), "hertz");
+  expect_window_edges(boussinesq<>(), "boussinesq");
+  expect_window_edges(ring<>(), "ring");
+}
+
+TEST(TerminalMotion, WindowOfTheUniformDisk) {
+  const auto w = terminal_window(uniform_disk<>());
+  EXPECT_EQ(w.lower, 0.25);
+  EXPECT_DOUBLE_EQ(w.upper, 2.0 / 3);
+  // Exactly at γ = 1/4, g(∞) = 0 and the next order, 𝓕/(ε𝓣) ≈ 4(1 − 5/(24ε²)) < 4,
+  // makes ε grow: pure sliding (docs/theory.md §8).
+  EXPECT_EQ(terminal_motion(uniform_disk<>(), 0.25).regime, terminal_regime::pure_sliding);
+  // The CD's own γ = (1 + b²)/2 lies in the CD's window.
+  const annulus<> cd(0.125);
+  const auto t = terminal_motion(cd, (1 + 0.125 * 0.125) / 2);
+  EXPECT_EQ(t.regime, terminal_regime::sliding_and_spinning);
+  EXPECT_NEAR(t.ratio, terminal_ratio(), 0.05);
+}
+
+// Boussinesq: 𝓕(1) = π/4 (theory (B1)) and 𝓣(1) = π/8, so for γ = 1/2 the
+// terminal ratio is exactly 1.  Hertz and the ring sit on an edge at γ = 1/2.
+TEST(TerminalMotion, SpecialCasesAtHalf) {
+  const double pi = boost::math::constants::pi<double>();
+  EXPECT_LE(boost::math::relative_difference(boussinesq<>().torque(1.0), pi / 8), 1e-15);
+  const auto b = terminal_motion(boussinesq<>(), 0.5);
+  EXPECT_EQ(b.regime, terminal_regime::sliding_and_spinning);
+  EXPECT_NEAR(b.ratio, 1.0, 1e-14);
+  EXPECT_EQ(terminal_motion(hertz<>(), 0.5).regime, terminal_regime::pure_spinning);
+  EXPECT_EQ(terminal_motion(ring<>(), 0.5).regime, terminal_regime::pure_sliding);
+}
+
+TEST(TerminalMotion, FromAnInitialRatio) {
+  const uniform_disk<> u;
+  for (double e : {1e-8, 0.1, 0.653, 2.0, 1e8})
+    EXPECT_NEAR(terminal_motion(u, 0.5, e).ratio, terminal_ratio(), 1e-15) << e;
+  EXPECT_EQ(terminal_motion(u, 0.5, 0.0).regime, terminal_regime::pure_spinning);
+  EXPECT_EQ(terminal_motion(u, 0.5, double(INFINITY)).regime, terminal_regime::pure_sliding);
+  EXPECT_EQ(terminal_motion(u, 0.1, 0.5).regime, terminal_regime::pure_sliding);
+  EXPECT_EQ(terminal_motion(u, 1.0, 0.5).regime, terminal_regime::pure_spinning);
+}
+
+// Half the load on a tiny central disk and half on the rim: the window is
+// empty (2⟨r⟩/⟨1/r⟩ < ⟨r²⟩/2) and between the two edges both ends attract.
+TEST(TerminalMotion, BistableProfileDependsOnTheInitialRatio) {
+  const auto p = make_weighted_sum<double>(
+      {0.5, 0.5}, scaled<uniform_disk<>>(uniform_disk<>(), 0.01), ring<>());
+  const auto w = terminal_window(p);
+  ASSERT_GT(w.lower, w.upper);
+  const double g = std::sqrt(w.lower * w.upper);
+  EXPECT_THROW(terminal_motion(p, g), std::domain_error);
+  EXPECT_EQ(terminal_motion(p, g, 1e-6).regime, terminal_regime::pure_spinning);
+  EXPECT_EQ(terminal_motion(p, g, 1e6).regime, terminal_regime::pure_sliding);
+}
+
+TEST(TerminalMotion, BadInputIsADomainError) {
+  const uniform_disk<> u;
+  for (double g : {0.0, -1.0, double(NAN), double(INFINITY)}) {
+    EXPECT_THROW(terminal_motion(u, g), std::domain_error) << g;
+    EXPECT_THROW(ratio_flow(u, 0.5, g), std::domain_error) << g;
+  }
+  EXPECT_THROW(ratio_flow(u, -1.0, 0.5), std::domain_error);
+  EXPECT_THROW(ratio_flow(u, double(NAN), 0.5), std::domain_error);
+  EXPECT_THROW(terminal_motion(u, 0.5, -1.0), std::domain_error);
+}
+
+}  // namespace
