@@ -10,6 +10,7 @@
 
 #include <spinslide/coupling.hpp>
 #include <spinslide/disk.hpp>
+#include <spinslide/dynamics.hpp>
 #include <spinslide/profile.hpp>
 #include <spinslide/tabulated.hpp>
 #include <spinslide/terminal.hpp>

@@ -1,0 +1,182 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//
+// Equations of motion, the odeint system, and spinslide's integration
+// through the stop (dynamics.hpp).
+#include <gtest/gtest.h>
+
+#include <spinslide/spinslide.hpp>
+
+#include <boost/math/special_functions/relative_difference.hpp>
+#include <boost/numeric/odeint.hpp>
+
+#include <vector>
+
+namespace {
+
+using namespace spinslide;
+using boost::math::relative_difference;
+namespace odeint = boost::numeric::odeint;
+
+TEST(StopTime, PureSlidingAndPureSpinningAreExact) {
+  EXPECT_EQ(stop_time(2.5, 0.0), 2.5);                    // t* = v0
+  EXPECT_EQ(stop_time(0.0, 3.0), 0.5 * 3.0 / (2.0 / 3));  // t* = γω0/⟨r⟩
+  EXPECT_EQ(stop_time(0.0, 0.0), 0.0);
+  const hertz<> h;
+  EXPECT_EQ(stop_time(h, 0.4, 0.0, 2.0), 0.4 * 2.0 / h.mean_radius());
+  const auto r = simulate_throw(uniform_disk<>(), 0.5, 2.0, 0.0);
+  EXPECT_EQ(r.distance, 2.0);  // v0²/2
+  EXPECT_EQ(r.angle, 0.0);
+  EXPECT_EQ(r.terminal.regime, terminal_regime::pure_sliding);
+}
+
+TEST(StopTime, ThrowStartedAtEpsilonZeroKeepsItAndStopsAtV0OverF) {
+  const double e0 = terminal_ratio();
+  for (double w0 : {0.01, 1.0, 100.0}) {
+    std::vector<double> ratios;
+    const auto r =
+        simulate_throw(uniform_disk<>(), 0.5, e0 * w0, w0,
+                       [&](const motion_sample<double>& m) { ratios.push_back(m.ratio); });
+    EXPECT_LE(relative_difference(r.time, e0 * w0 / force(e0)), 1e-12) << w0;
+    for (double e : ratios) EXPECT_NEAR(e, e0, 1e-13);
+  }
+  // Any profile and γ in its window: start at its ε₀.
+  const annulus<> cd(0.125);
+  const double g = (1 + 0.125 * 0.125) / 2;
+  const double e = terminal_motion(cd, g).ratio;
+  EXPECT_LE(relative_difference(stop_time(cd, g, e * 3, 3.0), e * 3 / cd.force(e)), 1e-12);
+}
+
+TEST(StopTime, ScaleInvariance) {
+  for (double l : {1e-3, 0.5, 7.0, 1e4}) {
+    for (auto vw : {std::pair<double, double>{1, 1}, {0.1, 3}, {5, 0.2}}) {
+      EXPECT_LE(relative_difference(stop_time(l * vw.first, l * vw.second),
+                                    l * stop_time(vw.first, vw.second)),
+                1e-12)
+          << l;
+    }
+  }
+}
+
+// Restarting from any point of a trajectory gives the remaining time.
+TEST(StopTime, SemigroupProperty) {
+  const double T = stop_time(1.0, 1.0);
+  const auto samples =
+      trajectory(uniform_disk<>(), 0.5, 1.0, 1.0, std::vector<double>{0.2, 0.7, 1.2});
+  for (const auto& m : samples)
+    EXPECT_LE(relative_difference(m.time + stop_time(m.speed, m.spin), T), 1e-12) << m.time;
+}
+
+// The paper's central claim, for initial ε from 1e-3 to 1e3.
+TEST(SimultaneousStop, BothReachZeroTogetherAndEpsilonTendsToEpsilonZero) {
+  const double e0 = terminal_ratio();
+  for (double ei = 1e-3; ei <= 1e3; ei *= 3.1) {
+    std::vector<motion_sample<double>> s;
+    const auto r = simulate_throw(uniform_disk<>(), 0.5, ei, 1.0,
+                                  [&](const motion_sample<double>& m) { s.push_back(m); });
+    ASSERT_GE(s.size(), 3u);
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+      ASSERT_GT(s[i].speed, 0) << "v reached 0 early, eps_i = " << ei;
+      ASSERT_GT(s[i].spin, 0) << "omega reached 0 early, eps_i = " << ei;
+      ASSERT_LE(s[i].time, r.time);
+    }
+    EXPECT_EQ(s.back().speed, 0);
+    EXPECT_EQ(s.back().spin, 0);
+    EXPECT_EQ(s.back().time, r.time);
+    // ε → ε₀ on the way: |ε − ε₀| shrinks over the last half of the motion
+    // (in x = −ln ω) and is small when the remaining time is 1e-20 of the total.
+    for (std::size_t i = s.size() / 2; i + 2 < s.size(); ++i)
+      EXPECT_LE(std::fabs(s[i + 1].ratio - e0), std::fabs(s[i].ratio - e0) + 1e-15) << ei;
+    EXPECT_NEAR(s[s.size() - 2].ratio, e0, 1e-5 * e0) << ei;
+    EXPECT_EQ(r.terminal.regime, terminal_regime::sliding_and_spinning);
+  }
+}
+
+TEST(SimultaneousStop, OutsideTheWindowTheRatioRunsAway) {
+  std::vector<double> ratio;
+  auto obs = [&](const motion_sample<double>& m) { ratio.push_back(m.ratio); };
+  const auto slide = simulate_throw(uniform_disk<>(), 0.1, 1.0, 1.0, obs);  // γ < 1/4
+  EXPECT_EQ(slide.terminal.regime, terminal_regime::pure_sliding);
+  EXPECT_GT(ratio[ratio.size() - 2], 1e6);
+  ratio.clear();
+  const auto spin = simulate_throw(uniform_disk<>(), 1.0, 1.0, 1.0, obs);  // γ > 2/3
+  EXPECT_EQ(spin.terminal.regime, terminal_regime::pure_spinning);
+  EXPECT_LT(ratio[ratio.size() - 2], 1e-6);
+}
+
+TEST(SimultaneousStop, WorkIsBoundedAtTheWindowEdges) {
+  const uniform_disk<> u;
+  for (double g :
+       {0.25, 0.25 * (1 + 1e-12), 0.25 * (1 - 1e-12), 2.0 / 3, 2.0 / 3 * (1 + 1e-12), 1e-6, 1e6}) {
+    for (double ei : {1e-6, 1.0, 1e6}) {
+      int steps = 0;
+      const auto r = simulate_throw(u, g, ei, 1.0, [&](const motion_sample<double>&) { ++steps; });
+      EXPECT_TRUE(std::isfinite(r.time)) << g << " " << ei;
+      EXPECT_GT(r.time, 0);
+      EXPECT_LT(steps, 20000) << g << " " << ei;
+    }
+  }
+}
+
+// The odeint system with a generic stepper agrees with our integration on the
+// smooth part of the motion.
+TEST(OdeintSystem, Dopri5AgreesOnTheSmoothPart) {
+  const uniform_disk<> u;
+  const dimensionless_motion<uniform_disk<>> sys(u, 0.5);
+  const std::vector<double> times = {0.1, 0.4, 0.8, 1.2};
+  const auto ours = trajectory(u, 0.5, 1.0, 1.0, times);
+  motion_state<double> x{1.0, 1.0, 0.0, 0.0};
+  double t0 = 0;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    odeint::integrate_adaptive(
+        odeint::make_controlled(1e-13, 1e-13, odeint::runge_kutta_dopri5<motion_state<double>>()),
+        sys, x, t0, times[i], 1e-4);
+    t0 = times[i];
+    EXPECT_NEAR(x[0], ours[i].speed, 1e-11);
+    EXPECT_NEAR(x[1], ours[i].spin, 1e-11);
+    EXPECT_NEAR(x[2], ours[i].distance, 1e-11);
+    EXPECT_NEAR(x[3], ours[i].angle, 1e-11);
+  }
+}
+
+TEST(OdeintSystem, SiUnitsMatchTheDimensionlessOnes) {
+  // A CD: R = 6 cm, μ = 0.2, g = 9.81, annulus b = 0.125, γ = (1 + b²)/2.
+  const annulus<> cd(0.125);
+  const double R = 0.06, mu = 0.2, g = 9.81, gamma = (1 + 0.125 * 0.125) / 2;
+  const double v0 = 0.8, w0 = 20.0;
+  const auto si = simulate_throw_si(cd, R, mu, g, gamma, v0, w0);
+  const double vs = mu * std::sqrt(g * R), ws = mu * std::sqrt(g / R), ts = std::sqrt(R / g);
+  const auto d = simulate_throw(cd, gamma, v0 / vs, w0 / ws);
+  EXPECT_LE(relative_difference(si.time, d.time * ts), 1e-15);
+  EXPECT_LE(relative_difference(si.distance, d.distance * mu * R), 1e-15);
+  EXPECT_LE(relative_difference(si.angle, d.angle * mu), 1e-15);
+  // And the SI odeint system, integrated to half the stop time, agrees with ours.
+  const si_motion<annulus<>> sys(cd, R, mu, g, gamma);
+  motion_state<double> x{v0, w0, 0.0, 0.0};
+  odeint::integrate_adaptive(
+      odeint::make_controlled(1e-12, 1e-12, odeint::runge_kutta_dopri5<motion_state<double>>()),
+      sys, x, 0.0, si.time / 2, 1e-5);
+  const auto half = trajectory(cd, gamma, v0 / vs, w0 / ws, std::vector<double>{si.time / 2 / ts});
+  EXPECT_NEAR(x[0], half[0].speed * vs, 1e-9);
+  EXPECT_NEAR(x[1], half[0].spin * ws, 1e-8);
+}
+
+TEST(Dynamics, BadInputIsADomainError) {
+  const uniform_disk<> u;
+  const double nan = std::nan("");
+  EXPECT_THROW(stop_time(-1.0, 1.0), std::domain_error);
+  EXPECT_THROW(stop_time(1.0, -1.0), std::domain_error);
+  EXPECT_THROW(stop_time(nan, 1.0), std::domain_error);
+  EXPECT_THROW(stop_time(1.0, nan), std::domain_error);
+  EXPECT_THROW(stop_time(u, 0.0, 1.0, 1.0), std::domain_error);
+  EXPECT_THROW(stop_time(u, nan, 1.0, 1.0), std::domain_error);
+  EXPECT_THROW(simulate_throw_si(u, 0.0, 0.2, 9.81, 0.5, 1.0, 1.0), std::domain_error);
+  EXPECT_THROW(simulate_throw_si(u, 0.06, -0.2, 9.81, 0.5, 1.0, 1.0), std::domain_error);
+  EXPECT_THROW(simulate_throw_si(u, 0.06, 0.2, nan, 0.5, 1.0, 1.0), std::domain_error);
+  EXPECT_THROW(simulate_throw_si(u, 0.06, 0.2, 9.81, -0.5, 1.0, 1.0), std::domain_error);
+  EXPECT_THROW((dimensionless_motion<uniform_disk<>>(u, 0.0)), std::domain_error);
+  EXPECT_THROW((si_motion<uniform_disk<>>(u, 0.06, 0.2, 0.0, 0.5)), std::domain_error);
+  EXPECT_THROW(trajectory(u, 0.5, 1.0, 1.0, std::vector<double>{0.5, 0.1}), std::domain_error);
+}
+
+}  // namespace
