@@ -7,13 +7,16 @@
 //   ./build/release/benchmarks/bench_disk
 #include <benchmark/benchmark.h>
 
+#include <spinslide/contact.hpp>
 #include <spinslide/disk.hpp>
+#include <spinslide/tabulated.hpp>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -85,6 +88,27 @@ void spinslide_force_torque_cpp_bin_float_50(benchmark::State& s) {
   run<mp>(s, [](const mp& e) { return spinslide::force_torque(e); });
 }
 
+// The contact law per call, at the same ratios: v = (ε cos φ, ε sin φ), ω = 1, a = 1.
+void contact_law_uniform_disk(benchmark::State& s) {
+  static const spinslide::contact_law<> law;
+  run<double>(s, [](double e) {
+    const std::array<double, 2> v = {0.6 * e, 0.8 * e};
+    return law(v, 1.0, 1.0, 2.0, 0.5);
+  });
+}
+void contact_law_tabulated_disk(benchmark::State& s) {
+  static const spinslide::contact_law<spinslide::tabulated_profile<>> law{
+      spinslide::tabulated_profile<>(spinslide::uniform_disk<>())};
+  run<double>(s, [](double e) {
+    const std::array<double, 2> v = {0.6 * e, 0.8 * e};
+    return law(v, 1.0, 1.0, 2.0, 0.5);
+  });
+}
+void tabulated_disk_force_torque(benchmark::State& s) {
+  static const spinslide::tabulated_profile<> tab{spinslide::uniform_disk<>()};
+  run<double>(s, [](double e) { return tab.force_torque(e); });
+}
+
 BENCHMARK(literal_boost_default_policy);
 BENCHMARK(literal_boost_no_promotion);
 BENCHMARK(spinslide_force_torque_double);
@@ -92,12 +116,18 @@ BENCHMARK(spinslide_force_plus_torque_double);
 BENCHMARK(spinslide_force_torque_float);
 BENCHMARK(spinslide_force_torque_long_double);
 BENCHMARK(spinslide_force_torque_cpp_bin_float_50);
+BENCHMARK(contact_law_uniform_disk);
+BENCHMARK(tabulated_disk_force_torque);
+BENCHMARK(contact_law_tabulated_disk);
 
 }  // namespace
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
-  spinslide_bench::ratio_reporter reporter("literal_boost_default_policy");
+  spinslide_bench::ratio_reporter reporter(
+      "literal_boost_default_policy",
+      {{"contact_law_uniform_disk", "spinslide_force_torque_double"},
+       {"contact_law_tabulated_disk", "tabulated_disk_force_torque"}});
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   return 0;

@@ -20,7 +20,9 @@ namespace spinslide_bench {
 
 class ratio_reporter : public benchmark::ConsoleReporter {
  public:
-  explicit ratio_reporter(std::string baseline) : baseline_(std::move(baseline)) {}
+  explicit ratio_reporter(std::string baseline,
+                          std::vector<std::pair<std::string, std::string>> comparisons = {})
+      : baseline_(std::move(baseline)), comparisons_(std::move(comparisons)) {}
 
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
@@ -45,10 +47,20 @@ class ratio_reporter : public benchmark::ConsoleReporter {
         std::printf("%-52s %12.2f %14s\n", r.first.c_str(), r.second, "(no baseline)");
     }
     std::printf("baseline: %s; 'Nx' means N times faster than the baseline.\n", baseline_.c_str());
+    for (const auto& c : comparisons_) {
+      double a = 0, b = 0;
+      for (const auto& r : results_) {
+        if (r.first == c.first) a = r.second;
+        if (r.first == c.second) b = r.second;
+      }
+      if (a > 0 && b > 0)
+        std::printf("%s costs %.2f times %s\n", c.first.c_str(), a / b, c.second.c_str());
+    }
   }
 
  private:
   std::string baseline_;
+  std::vector<std::pair<std::string, std::string>> comparisons_;
   std::vector<std::pair<std::string, double>> results_;
 };
 

@@ -8,6 +8,7 @@
 #ifndef SPINSLIDE_SPINSLIDE_HPP
 #define SPINSLIDE_SPINSLIDE_HPP
 
+#include <spinslide/contact.hpp>
 #include <spinslide/coupling.hpp>
 #include <spinslide/disk.hpp>
 #include <spinslide/dynamics.hpp>
