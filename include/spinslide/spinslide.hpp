@@ -8,6 +8,7 @@
 #ifndef SPINSLIDE_SPINSLIDE_HPP
 #define SPINSLIDE_SPINSLIDE_HPP
 
+#include <spinslide/approximations.hpp>
 #include <spinslide/contact.hpp>
 #include <spinslide/coupling.hpp>
 #include <spinslide/disk.hpp>

@@ -1,0 +1,113 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file approximations.hpp
+/// The friction models engines use today, written as profiles (force_torque
+/// and the three moments), so that they plug into the coupling curve, the
+/// terminal analysis, the dynamics and the contact law exactly like the
+/// exact law, for comparison (docs/approximations.md).
+///
+/// Each is parametrised by the moments of the profile it imitates (the
+/// uniform disk by default: ⟨r⟩ = 2/3, ⟨1/r⟩ = 2, ⟨r²⟩ = 1/2).  Their
+/// "moments" are the ones their own limits imply through docs/theory.md (L),
+/// +∞ where a limit does not exist, which is what the terminal analysis needs.
+
+#ifndef SPINSLIDE_APPROXIMATIONS_HPP
+#define SPINSLIDE_APPROXIMATIONS_HPP
+
+#include <spinslide/profile.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace spinslide {
+
+/// Uncoupled caps: |F| = μN whenever sliding, |T| = μN⟨r⟩a whenever spinning,
+/// independently — Bullet's m_spinningFriction, the torsional rows of ODE and
+/// Gazebo, Chrono's spinning friction, Box2D's b2FrictionJoint maxTorque,
+/// PhysX's torsional patch, LAMMPS "marshall" twisting, YADE, MercuryDPM.
+/// 𝓕(ε) = 1 and 𝓣(ε) = ⟨r⟩ for 0 < ε < ∞.
+template <class Real = double, class Policy = boost::math::policies::policy<>>
+class uncoupled_caps : public detail::profile_base<uncoupled_caps<Real, Policy>, Real, Policy> {
+ public:
+  /// `torque_cap` = ⟨r⟩ of the imitated profile (the torque cap in units of μNa).
+  explicit uncoupled_caps(Real torque_cap = Real(2) / 3)
+      : cap_(detail::checked_parameter<Real>(
+            torque_cap, std::numeric_limits<Real>::min(), std::numeric_limits<Real>::max(), false,
+            "spinslide::uncoupled_caps<%1%>", "Got torque_cap = %1%, but it must be > 0.")) {}
+  Real mean_radius() const { return cap_; }
+  Real mean_inverse_radius() const { return std::numeric_limits<Real>::infinity(); }
+  Real mean_square_radius() const { return std::numeric_limits<Real>::infinity(); }
+  force_torque_result<Real> general(Real) const { return {Real(1), cap_}; }
+
+ private:
+  Real cap_;
+};
+
+/// The ellipsoidal limit surface (robotics) and MuJoCo's elliptic cone:
+/// (𝓕/1)² + (𝓣/τ)² = 1, with the direction given by maximum dissipation
+/// (the normal of the curve along (v, aω)):
+///   𝓕 = ε/√(ε² + τ²),   𝓣 = τ²/√(ε² + τ²).
+/// τ is the torque semi-axis in units of μNa: ⟨r⟩ matches the imitated
+/// profile's pure-spinning torque; MuJoCo's torsional coefficient μ_t (a
+/// length) corresponds to τ = μ_t/(μa).
+template <class Real = double, class Policy = boost::math::policies::policy<>>
+class elliptic_limit_surface
+    : public detail::profile_base<elliptic_limit_surface<Real, Policy>, Real, Policy> {
+ public:
+  explicit elliptic_limit_surface(Real torque_axis = Real(2) / 3)
+      : tau_(detail::checked_parameter<Real>(torque_axis, std::numeric_limits<Real>::min(),
+                                             std::numeric_limits<Real>::max(), false,
+                                             "spinslide::elliptic_limit_surface<%1%>",
+                                             "Got torque_axis = %1%, but it must be > 0.")) {}
+  Real mean_radius() const { return tau_; }
+  Real mean_inverse_radius() const { return 2 / tau_; }        // 𝓕′(0) = 1/τ
+  Real mean_square_radius() const { return 2 * tau_ * tau_; }  // ε𝓣 → τ²
+  force_torque_result<Real> general(Real eps) const {
+    BOOST_MATH_STD_USING
+    const Real h = hypot(eps, tau_);
+    return {eps / h, tau_ * tau_ / h};
+  }
+
+ private:
+  Real tau_;
+};
+
+/// First-order two-point Padé approximants, matched to the exact limits
+/// (docs/theory.md (L)) at ε → 0 and ε → ∞:
+///   𝓕 = ε/(ε + 2/⟨1/r⟩),   𝓣 = ⟨r⟩⟨r²⟩/(⟨r²⟩ + 2⟨r⟩ε),
+/// so 𝓕′(0) = ⟨1/r⟩/2, 𝓕(∞) = 1, 𝓣(0) = ⟨r⟩, ε𝓣 → ⟨r²⟩/2.
+template <class Real = double, class Policy = boost::math::policies::policy<>>
+class pade_approximation
+    : public detail::profile_base<pade_approximation<Real, Policy>, Real, Policy> {
+ public:
+  pade_approximation(Real mean_radius = Real(2) / 3, Real mean_inverse_radius = 2,
+                     Real mean_square_radius = Real(1) / 2)
+      : r_(positive(mean_radius)),
+        inv_(positive(mean_inverse_radius)),
+        sq_(positive(mean_square_radius)) {}
+  /// Matched to a profile's moments.
+  template <class Profile>
+  static pade_approximation matching(const Profile& p) {
+    return pade_approximation(p.mean_radius(), p.mean_inverse_radius(), p.mean_square_radius());
+  }
+  Real mean_radius() const { return r_; }
+  Real mean_inverse_radius() const { return inv_; }
+  Real mean_square_radius() const { return sq_; }
+  force_torque_result<Real> general(Real eps) const {
+    return {eps / (eps + 2 / inv_), r_ * sq_ / (sq_ + 2 * r_ * eps)};
+  }
+
+ private:
+  static Real positive(Real x) {
+    return detail::checked_parameter<Real>(
+        x, std::numeric_limits<Real>::min(), std::numeric_limits<Real>::max(), false,
+        "spinslide::pade_approximation<%1%>", "Got a moment %1%, but every moment must be > 0.");
+  }
+  Real r_, inv_, sq_;
+};
+
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_APPROXIMATIONS_HPP
