@@ -84,10 +84,10 @@ TEST(SimultaneousStop, BothReachZeroTogetherAndEpsilonTendsToEpsilonZero) {
     EXPECT_EQ(s.back().spin, 0);
     EXPECT_EQ(s.back().time, r.time);
     // ε → ε₀ on the way: |ε − ε₀| shrinks over the last half of the motion
-    // (in x = −ln ω) and is small when the remaining time is 1e-20 of the total.
+    // (in x = −ln ω) and is small when the remaining time is 1e-18 of the total.
     for (std::size_t i = s.size() / 2; i + 2 < s.size(); ++i)
       EXPECT_LE(std::fabs(s[i + 1].ratio - e0), std::fabs(s[i].ratio - e0) + 1e-15) << ei;
-    EXPECT_NEAR(s[s.size() - 2].ratio, e0, 1e-5 * e0) << ei;
+    EXPECT_NEAR(s[s.size() - 2].ratio, e0, 1e-4 * e0) << ei;
     EXPECT_EQ(r.terminal.regime, terminal_regime::sliding_and_spinning);
   }
 }
@@ -159,6 +159,33 @@ TEST(OdeintSystem, SiUnitsMatchTheDimensionlessOnes) {
   const auto half = trajectory(cd, gamma, v0 / vs, w0 / ws, std::vector<double>{si.time / 2 / ts});
   EXPECT_NEAR(x[0], half[0].speed * vs, 1e-9);
   EXPECT_NEAR(x[1], half[0].spin * ws, 1e-8);
+}
+
+// stop_time(v0, ω0) of the paper's disk is a tabulated throw: it must agree
+// with the integration to 1e-12 over initial ratios 1e-8 … 1e8.
+TEST(TabulatedThrow, PaperStopTimeMatchesTheIntegrationTo1e12) {
+  double worst = 0;
+  for (double e = 1e-8; e < 1e8; e *= 1.9) {
+    for (double w0 : {1e-3, 1.0, 50.0}) {
+      const double ref = simulate_throw(uniform_disk<>(), 0.5, e * w0, w0).time;
+      worst = std::max(worst, relative_difference(stop_time(e * w0, w0), ref));
+    }
+  }
+  EXPECT_LE(worst, 1e-12);
+  EXPECT_EQ(stop_time(3.0, 0.0), 3.0);
+  EXPECT_THROW(stop_time(-1.0, 1.0), std::domain_error);
+}
+
+TEST(TabulatedThrow, AnyProfileAndGamma) {
+  const ring<> cd;  // cheap closed forms keep the one-time build short
+  const double g = 1.0;
+  const tabulated_throw<ring<>> table(cd, g);
+  for (double e : {1e-4, 0.3, 0.663, 2.0, 1e3}) {
+    const auto r = simulate_throw(cd, g, e, 2.0);
+    EXPECT_LE(relative_difference(table.stop_time(e, 2.0), r.time), 1e-12) << e;
+    EXPECT_LE(relative_difference(table.distance(e, 2.0), r.distance), 1e-8)
+        << e;  // ~1e-9: see the class
+  }
 }
 
 TEST(Dynamics, BadInputIsADomainError) {
