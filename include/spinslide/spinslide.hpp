@@ -11,6 +11,7 @@
 #include <spinslide/approximations.hpp>
 #include <spinslide/contact.hpp>
 #include <spinslide/coupling.hpp>
+#include <spinslide/cylinder.hpp>
 #include <spinslide/disk.hpp>
 #include <spinslide/dynamics.hpp>
 #include <spinslide/profile.hpp>
