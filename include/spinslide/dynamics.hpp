@@ -476,6 +476,11 @@ class tabulated_throw {
 template <class Real>
 Real stop_time(Real v0, Real omega0) {
   if constexpr (std::is_same<Real, double>::value) {
+    // Check before the one-time build, so that bad input fails fast.
+    static const char* function = "spinslide::stop_time<%1%>(%1%, %1%)";
+    const boost::math::policies::policy<> pol;
+    detail::checked_speed(v0, function, "Got v0 = %1%, but it must be finite and >= 0.", pol);
+    detail::checked_speed(omega0, function, "Got omega0 = %1%, but it must be finite and >= 0.", pol);
     static const tabulated_throw<uniform_disk<double>> table(uniform_disk<double>(), 0.5);
     return table.stop_time(v0, omega0);
   } else {
