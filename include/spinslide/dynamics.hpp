@@ -50,6 +50,23 @@ Real checked_speed(Real x, const char* function, const char* message, const Poli
   return x;
 }
 
+template <class Real>
+struct throw_input {
+  Real gamma, v0, omega0;
+};
+
+// The checks every throw entry point makes: γ finite and > 0, speeds finite
+// and >= 0; otherwise a domain error naming `function`.
+template <class Real, class Policy>
+throw_input<Real> checked_throw(const char* function, Real gamma, Real v0, Real omega0,
+                                const Policy& pol) {
+  return {
+      checked_positive(gamma, function,
+                       "Got inertia_ratio = %1%, but gamma must be finite and > 0.", pol),
+      checked_speed(v0, function, "Got v0 = %1%, but it must be finite and >= 0.", pol),
+      checked_speed(omega0, function, "Got omega0 = %1%, but it must be finite and >= 0.", pol)};
+}
+
 }  // namespace detail
 
 /// The paper's equations in dimensionless form, generalised to any profile
@@ -333,18 +350,11 @@ stop_result<typename Profile::value_type> integrate_stop(
 template <class Profile, class Real, class Observer>
 stop_result<Real> simulate_throw(const Profile& profile, Real inertia_ratio, Real v0, Real omega0,
                                  Observer observer) {
-  using Policy = typename Profile::policy_type;
-  static const char* function = "spinslide::simulate_throw<%1%>";
-  const Real gamma = detail::checked_positive(
-      inertia_ratio, function, "Got inertia_ratio = %1%, but gamma must be finite and > 0.",
-      Policy());
-  const Real v = detail::checked_speed(v0, function,
-                                       "Got v0 = %1%, but it must be finite and >= 0.", Policy());
-  const Real w = detail::checked_speed(
-      omega0, function, "Got omega0 = %1%, but it must be finite and >= 0.", Policy());
+  const auto in = detail::checked_throw("spinslide::simulate_throw<%1%>", inertia_ratio, v0, omega0,
+                                        typename Profile::policy_type());
   std::vector<Real> none;
   std::vector<motion_sample<Real>> unused;
-  return detail::integrate_stop(profile, gamma, v, w, observer, none, unused);
+  return detail::integrate_stop(profile, in.gamma, in.v0, in.omega0, observer, none, unused);
 }
 
 /// The trajectory of a throw sampled at the given times (dimensionless,
@@ -354,13 +364,7 @@ std::vector<motion_sample<Real>> trajectory(const Profile& profile, Real inertia
                                             Real omega0, const std::vector<Real>& times) {
   using Policy = typename Profile::policy_type;
   static const char* function = "spinslide::trajectory<%1%>";
-  const Real gamma = detail::checked_positive(
-      inertia_ratio, function, "Got inertia_ratio = %1%, but gamma must be finite and > 0.",
-      Policy());
-  const Real v = detail::checked_speed(v0, function,
-                                       "Got v0 = %1%, but it must be finite and >= 0.", Policy());
-  const Real w = detail::checked_speed(
-      omega0, function, "Got omega0 = %1%, but it must be finite and >= 0.", Policy());
+  const auto in = detail::checked_throw(function, inertia_ratio, v0, omega0, Policy());
   for (std::size_t i = 0; i < times.size(); ++i) {
     if (!(times[i] >= 0) || (i > 0 && times[i] < times[i - 1]))
       boost::math::policies::raise_domain_error<Real>(
@@ -370,7 +374,7 @@ std::vector<motion_sample<Real>> trajectory(const Profile& profile, Real inertia
   std::vector<motion_sample<Real>> samples;
   samples.reserve(times.size());
   detail::integrate_stop(
-      profile, gamma, v, w, [](const motion_sample<Real>&) {}, times, samples);
+      profile, in.gamma, in.v0, in.omega0, [](const motion_sample<Real>&) {}, times, samples);
   return samples;
 }
 
@@ -477,10 +481,8 @@ template <class Real>
 Real stop_time(Real v0, Real omega0) {
   if constexpr (std::is_same<Real, double>::value) {
     // Check before the one-time build, so that bad input fails fast.
-    static const char* function = "spinslide::stop_time<%1%>(%1%, %1%)";
-    const boost::math::policies::policy<> pol;
-    detail::checked_speed(v0, function, "Got v0 = %1%, but it must be finite and >= 0.", pol);
-    detail::checked_speed(omega0, function, "Got omega0 = %1%, but it must be finite and >= 0.", pol);
+    detail::checked_throw("spinslide::stop_time<%1%>(%1%, %1%)", 0.5, v0, omega0,
+                          boost::math::policies::policy<>());
     static const tabulated_throw<uniform_disk<double>> table(uniform_disk<double>(), 0.5);
     return table.stop_time(v0, omega0);
   } else {
