@@ -98,7 +98,7 @@ class contact_law {
   Real velocity_scale() const { return vs_; }
 
   /// Planar contact.  `velocity`: the relative sliding velocity (x, y);
-  /// `spin`: the relative angular velocity about the normal; `radius` a ≥ 0,
+  /// `spin`: the relative angular velocity about the normal; `radius` a > 0,
   /// `normal_force` N ≥ 0, `friction_coefficient` μ ≥ 0.
   template <class Vec2>
   planar_friction<Vec2, Real> operator()(const Vec2& velocity, Real spin, Real radius,
@@ -187,7 +187,7 @@ class contact_law {
     const Real rim = a * fabs(spin);  // a|ω|
     if (!(muN > 0) || (speed == 0 && rim == 0)) return;
     Real F, T;
-    if (rim == 0) {  // pure sliding (also a = 0: a point contact)
+    if (rim == 0) {  // pure sliding (also when a|ω| underflows)
       F = 1;
       T = 0;
     } else if (speed == 0) {  // pure spinning
