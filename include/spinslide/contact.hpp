@@ -166,9 +166,9 @@ class contact_law {
     using Policy = typename Profile::policy_type;
     f = 0;
     t = 0;
-    if (!(a >= 0) || !(boost::math::isfinite)(a)) {
+    if (!(a > 0) || !(boost::math::isfinite)(a)) {
       f = t = boost::math::policies::raise_domain_error<Real>(
-          function, "Got radius = %1%, but the contact radius must be finite and >= 0.", a,
+          function, "Got radius = %1%, but the contact radius must be finite and > 0.", a,
           Policy());
       return;
     }
