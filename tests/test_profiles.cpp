@@ -48,6 +48,22 @@ const std::map<std::string, std::vector<ref_point>>& reference() {
                          static_cast<double>(std::strtold(f.c_str(), nullptr)),
                          static_cast<double>(std::strtold(tq.c_str(), nullptr))});
     }
+    // The uniform disk's own area-integral table (the 2-D profile generator
+    // was checked against it to 5e-28).
+    std::ifstream disk(SPINSLIDE_DISK_REFERENCE);
+    while (std::getline(disk, line)) {
+      if (line.empty() || line[0] == '#' || line.rfind("eps_hex", 0) == 0) continue;
+      std::stringstream ss(line);
+      std::string hex, dec, exact_float, f, tq;
+      std::getline(ss, hex, ',');
+      std::getline(ss, dec, ',');
+      std::getline(ss, exact_float, ',');
+      std::getline(ss, f, ',');
+      std::getline(ss, tq, ',');
+      t["uniform"].push_back({std::strtod(hex.c_str(), nullptr),
+                              static_cast<double>(std::strtold(f.c_str(), nullptr)),
+                              static_cast<double>(std::strtold(tq.c_str(), nullptr))});
+    }
     return t;
   }();
   return table;
@@ -322,8 +338,8 @@ TEST(Coupling, OutOfRangeIsADomainError) {
 
 // The paper: for the CD (a hole of b = 0.125) "deviation from the full disk
 // case is not significant".  docs/profiles.md tabulates the largest
-// differences; here they are bounded (|Δ𝓕| ≤ b²/(1−b²) from (A1)) and agree
-// with the reference table's own differences.
+// differences; here they are bounded by (A1) (|Δ𝓕| ≤ b²/(1−b²),
+// |Δ𝓣| ≤ (2/3)b²/(1−b²)) and agree with the 2-D reference for the annulus.
 TEST(PaperClaims, CdHoleChangesForceAndTorqueByUnderTwoPercent) {
   const annulus<> cd(0.125);
   const uniform_disk<> disk;
@@ -334,15 +350,12 @@ TEST(PaperClaims, CdHoleChangesForceAndTorqueByUnderTwoPercent) {
   }
   const double b = 0.125;
   EXPECT_LE(dF, b * b / (1 - b * b));
-  EXPECT_LE(dT, cd.mean_radius() - disk.mean_radius() + 1e-15);  // largest at ε = 0
-  EXPECT_GT(dF, 0.001);
-  const auto& ra = reference().at("annulus_0.125");
-  const auto& ru = reference().at("uniform");
-  ASSERT_EQ(ra.size(), ru.size());
-  for (std::size_t i = 0; i < ra.size(); ++i) {
-    ASSERT_EQ(ra[i].eps, ru[i].eps);
-    EXPECT_NEAR(cd.force(ra[i].eps) - disk.force(ra[i].eps), ra[i].force - ru[i].force, 1e-13);
-    EXPECT_NEAR(cd.torque(ra[i].eps) - disk.torque(ra[i].eps), ra[i].torque - ru[i].torque, 1e-13);
+  EXPECT_LE(dT, 2.0 / 3 * b * b / (1 - b * b));
+  EXPECT_GT(dF, 0.01);  // but not negligible either: 0.012 near eps = 0.17
+  EXPECT_GE(dT, cd.mean_radius() - disk.mean_radius());  // at least the eps = 0 difference
+  for (const auto& r : reference().at("annulus_0.125")) {
+    EXPECT_NEAR(cd.force(r.eps) - disk.force(r.eps), r.force - disk.force(r.eps), 1e-14) << r.eps;
+    EXPECT_NEAR(cd.torque(r.eps) - disk.torque(r.eps), r.torque - disk.torque(r.eps), 1e-14) << r.eps;
   }
 }
 
