@@ -232,6 +232,14 @@ TEST(ProfileIdentities, RingForceIsTorqueAtReciprocal) {
   EXPECT_LE(relative_difference(r.torque(1.0), 2 / pi), 2e-16);
 }
 
+// For ε ≤ 1 the Boussinesq force is exactly πε/4 (found in the 2-D reference
+// table, where it holds to 1e-44; theory (B2)).
+TEST(ProfileIdentities, BoussinesqForceBelowOneIsLinear) {
+  const boussinesq<> b;
+  for (double e : {1e-6, 0.01, 0.3, 0.5, 0.9, 0.999, 1.0})
+    EXPECT_LE(relative_difference(b.force(e), pi * e / 4), 1e-14) << e;
+}
+
 // For ε ≥ 1 the Boussinesq force is elementary: (asin k/k + √(1−k²))/2, k = 1/ε.
 TEST(ProfileIdentities, BoussinesqForceAboveOneIsElementary) {
   const boussinesq<> b;
@@ -355,7 +363,8 @@ TEST(PaperClaims, CdHoleChangesForceAndTorqueByUnderTwoPercent) {
   EXPECT_GE(dT, cd.mean_radius() - disk.mean_radius());  // at least the eps = 0 difference
   for (const auto& r : reference().at("annulus_0.125")) {
     EXPECT_NEAR(cd.force(r.eps) - disk.force(r.eps), r.force - disk.force(r.eps), 1e-14) << r.eps;
-    EXPECT_NEAR(cd.torque(r.eps) - disk.torque(r.eps), r.torque - disk.torque(r.eps), 1e-14) << r.eps;
+    EXPECT_NEAR(cd.torque(r.eps) - disk.torque(r.eps), r.torque - disk.torque(r.eps), 1e-14)
+        << r.eps;
   }
 }
 
