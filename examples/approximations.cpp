@@ -11,6 +11,8 @@
 #include <spinslide/approximations.hpp>
 #include <spinslide/spinslide.hpp>
 
+#include "gnuplot.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -166,34 +168,28 @@ int main(int argc, char** argv) {
   std::printf("  -> %s\n", md.c_str());
 
   std::printf("[3/3] figure -> %s/figures/approximations.png\n", out.c_str());
-  const std::string gp = out + "/approximations.gp";
-  if (FILE* g = std::fopen(gp.c_str(), "w")) {
-    std::fputs(
-        "set terminal pngcairo size 1200,500 font ',11'\n"
-        "set output 'figures/approximations.png'\n"
-        "set multiplot layout 1,2\n"
-        "set logscale x; set yrange [0:1.05]; set xlabel 'eps = v/(R omega)'; set ylabel 'F, T'; "
-        "set key right center\n"
-        "plot 'approximations.csv' u 1:2 w l lw 3 lc 'black' t 'F exact', '' u 1:3 w l lw 3 dt 2 "
-        "lc 'black' t 'T exact',"
-        " '' u 1:4 w l lc 'red' t 'F caps', '' u 1:5 w l dt 2 lc 'red' t 'T caps',"
-        " '' u 1:6 w l lc 'blue' t 'F elliptic', '' u 1:7 w l dt 2 lc 'blue' t 'T elliptic',"
-        " '' u 1:8 w l lc 'dark-green' t 'F Pade', '' u 1:9 w l dt 2 lc 'dark-green' t 'T Pade'\n"
-        "unset logscale x; set yrange [0:0.75]; set xrange [0:1.05]; set xlabel 'F'; set ylabel "
-        "'T'; set key left bottom\n"
-        "plot 'approximations.csv' u 2:3 w l lw 3 lc 'black' t 'exact limit curve', '' u 6:7 w l "
-        "lc 'blue' t 'elliptic',"
-        " '' u 8:9 w l lc 'dark-green' t 'Pade', '-' w p pt 7 ps 1.5 lc 'red' t 'caps (a corner)'\n"
-        "1 0.6666667\ne\n"
-        "unset multiplot\n",
-        g);
-    std::fclose(g);
-  }
-  const std::string mk = "mkdir -p '" + out + "/figures'";
-  // Run in the output directory: the script's paths are relative to it.
-  const std::string run =
-      "command -v gnuplot >/dev/null 2>&1 && cd '" + out + "' && gnuplot approximations.gp";
-  if (std::system(mk.c_str()) != 0 || std::system(run.c_str()) != 0)
+  if (std::system(("mkdir -p '" + out + "/figures'").c_str()) != 0 ||
+      !spinslide_examples::plot(
+          out, "approximations.gp",
+
+          "set terminal pngcairo size 1200,500 font ',11'\n"
+          "set output 'figures/approximations.png'\n"
+          "set multiplot layout 1,2\n"
+          "set logscale x; set yrange [0:1.05]; set xlabel 'eps = v/(R omega)'; set ylabel 'F, T'; "
+          "set key right center\n"
+          "plot 'approximations.csv' u 1:2 w l lw 3 lc 'black' t 'F exact', '' u 1:3 w l lw 3 dt 2 "
+          "lc 'black' t 'T exact',"
+          " '' u 1:4 w l lc 'red' t 'F caps', '' u 1:5 w l dt 2 lc 'red' t 'T caps',"
+          " '' u 1:6 w l lc 'blue' t 'F elliptic', '' u 1:7 w l dt 2 lc 'blue' t 'T elliptic',"
+          " '' u 1:8 w l lc 'dark-green' t 'F Pade', '' u 1:9 w l dt 2 lc 'dark-green' t 'T Pade'\n"
+          "unset logscale x; set yrange [0:0.75]; set xrange [0:1.05]; set xlabel 'F'; set ylabel "
+          "'T'; set key left bottom\n"
+          "plot 'approximations.csv' u 2:3 w l lw 3 lc 'black' t 'exact limit curve', '' u 6:7 w l "
+          "lc 'blue' t 'elliptic',"
+          " '' u 8:9 w l lc 'dark-green' t 'Pade', '-' w p pt 7 ps 1.5 lc 'red' t 'caps (a "
+          "corner)'\n"
+          "1 0.6666667\ne\n"
+          "unset multiplot\n"))
     std::printf(
         "  gnuplot not found or failed: no PNG (install gnuplot-nox); the CSV and table are "
         "written\n");

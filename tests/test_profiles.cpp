@@ -19,6 +19,8 @@
 #include <thread>
 #include <vector>
 
+#include "reference_table.hpp"
+
 namespace {
 
 using namespace spinslide;
@@ -50,20 +52,9 @@ const std::map<std::string, std::vector<ref_point>>& reference() {
     }
     // The uniform disk's own area-integral table (the 2-D profile generator
     // was checked against it to 5e-28).
-    std::ifstream disk(SPINSLIDE_DISK_REFERENCE);
-    while (std::getline(disk, line)) {
-      if (line.empty() || line[0] == '#' || line.rfind("eps_hex", 0) == 0) continue;
-      std::stringstream ss(line);
-      std::string hex, dec, exact_float, f, tq;
-      std::getline(ss, hex, ',');
-      std::getline(ss, dec, ',');
-      std::getline(ss, exact_float, ',');
-      std::getline(ss, f, ',');
-      std::getline(ss, tq, ',');
-      t["uniform"].push_back({std::strtod(hex.c_str(), nullptr),
-                              static_cast<double>(std::strtold(f.c_str(), nullptr)),
-                              static_cast<double>(std::strtold(tq.c_str(), nullptr))});
-    }
+    for (const auto& r : spinslide_test::load_disk_reference(SPINSLIDE_DISK_REFERENCE))
+      t["uniform"].push_back({r.eps, static_cast<double>(std::strtold(r.force.c_str(), nullptr)),
+                              static_cast<double>(std::strtold(r.torque.c_str(), nullptr))});
     return t;
   }();
   return table;

@@ -15,6 +15,8 @@
 #include <box2d/box2d.h>
 #include <spinslide/spinslide.hpp>
 
+#include "../gnuplot.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -133,30 +135,25 @@ int main(int argc, char** argv) {
       together ? "yes" : "NO", ratio_ok ? "yes" : "NO", time_ok ? "yes" : "NO",
       apart ? "yes" : "NO");
 
-  const std::string gp = out + "/box2d_puck.gp";
-  if (FILE* p = std::fopen(gp.c_str(), "w")) {
-    std::fputs(
-        "set terminal pngcairo size 1200,450 font ',11'\n"
-        "set output 'box2d_puck.png'\n"
-        "set multiplot layout 1,2\n"
-        "set xrange [0:1.1]; set xlabel 't [s]'; set ylabel 'speed [m/s]'; set key right top\n"
-        "plot 'box2d_puck.csv' u 1:5 w l lw 2 lc 'black' t 'A spinslide: v', '' u 1:6 w l lw 2 dt "
-        "2 lc 'black' "
-        "t 'A spinslide: R omega', '' u 1:11 w l lc 'red' t 'B b2FrictionJoint: v', '' u 1:12 w l "
-        "dt 2 lc 'red' t "
-        "'B b2FrictionJoint: R omega'\n"
-        "set ylabel 'v/(R omega)'; set logscale y; set yrange [0.1:100]\n"
-        "plot 'box2d_puck.csv' u 1:($5 > 0.002 ? $7 : 1/0) w l lw 2 lc 'black' t 'A spinslide', "
-        "'' u 1:($11 > 0.002 && $12 > 0.002 ? $13 : 1/0) w l lc 'red' t 'B b2FrictionJoint', 0.653 "
-        "w l dt 3 lc "
-        "'blue' t 'eps0 = 0.653'\n"
-        "unset multiplot\n",
-        p);
-    std::fclose(p);
-  }
-  const std::string run =
-      "command -v gnuplot >/dev/null 2>&1 && cd '" + out + "' && gnuplot box2d_puck.gp";
-  if (std::system(run.c_str()) == 0)
+  const bool figure = spinslide_examples::plot(
+      out, "box2d_puck.gp",
+
+      "set terminal pngcairo size 1200,450 font ',11'\n"
+      "set output 'box2d_puck.png'\n"
+      "set multiplot layout 1,2\n"
+      "set xrange [0:1.1]; set xlabel 't [s]'; set ylabel 'speed [m/s]'; set key right top\n"
+      "plot 'box2d_puck.csv' u 1:5 w l lw 2 lc 'black' t 'A spinslide: v', '' u 1:6 w l lw 2 dt "
+      "2 lc 'black' "
+      "t 'A spinslide: R omega', '' u 1:11 w l lc 'red' t 'B b2FrictionJoint: v', '' u 1:12 w l "
+      "dt 2 lc 'red' t "
+      "'B b2FrictionJoint: R omega'\n"
+      "set ylabel 'v/(R omega)'; set logscale y; set yrange [0.1:100]\n"
+      "plot 'box2d_puck.csv' u 1:($5 > 0.002 ? $7 : 1/0) w l lw 2 lc 'black' t 'A spinslide', "
+      "'' u 1:($11 > 0.002 && $12 > 0.002 ? $13 : 1/0) w l lc 'red' t 'B b2FrictionJoint', 0.653 "
+      "w l dt 3 lc "
+      "'blue' t 'eps0 = 0.653'\n"
+      "unset multiplot\n");
+  if (figure)
     std::printf("wrote %s/box2d_puck.csv and %s/box2d_puck.png\n", out.c_str(), out.c_str());
   else
     std::printf("wrote %s/box2d_puck.csv (no gnuplot: no figure)\n", out.c_str());

@@ -12,6 +12,8 @@
 
 #include <boost/numeric/odeint.hpp>
 
+#include "../gnuplot.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -101,26 +103,20 @@ int main(int argc, char** argv) {
     for (const state& s : mirrored.path) std::fprintf(f, "%.8f %.8f\n", s[0], s[1]);
     std::fclose(f);
   }
-  const std::string gp = out + "/cylinder_path.gp";
-  if (FILE* p = std::fopen(gp.c_str(), "w")) {
-    std::fputs(
-        "set terminal pngcairo size 900,500 font ',11'\nset output 'cylinder_path.png'\n"
-        "set xlabel 'x [m]'; set ylabel 'y [m]'; set key left bottom; set grid\n"
-        "set title 'Cylinder on one face, v0 = 1.5 m/s along x, omega0 = 30 rad/s "
-        "(counter-clockwise)'\n"
-        "plot 'cylinder_path.csv' index 0 w l lw 2 t 'h = 0 (flat disk)', '' index 1 w l lw 2 t 'h "
-        "= 1 cm', "
-        "'' index 2 w l lw 2 t 'h = 2 cm', '' index 3 w l lw 2 t 'h = 3 cm', '' index 4 w l dt 2 "
-        "lw 2 t "
-        "'h = 2 cm, spin reversed'\n",
-        p);
-    std::fclose(p);
-  }
-  const std::string run =
-      "command -v gnuplot >/dev/null 2>&1 && cd '" + out + "' && gnuplot cylinder_path.gp";
-  std::printf("%s\n", std::system(run.c_str()) == 0
-                          ? "wrote cylinder_path.csv and cylinder_path.png"
-                          : "wrote cylinder_path.csv (no gnuplot: no figure)");
+  const bool figure = spinslide_examples::plot(
+      out, "cylinder_path.gp",
+
+      "set terminal pngcairo size 900,500 font ',11'\nset output 'cylinder_path.png'\n"
+      "set xlabel 'x [m]'; set ylabel 'y [m]'; set key left bottom; set grid\n"
+      "set title 'Cylinder on one face, v0 = 1.5 m/s along x, omega0 = 30 rad/s "
+      "(counter-clockwise)'\n"
+      "plot 'cylinder_path.csv' index 0 w l lw 2 t 'h = 0 (flat disk)', '' index 1 w l lw 2 t 'h "
+      "= 1 cm', "
+      "'' index 2 w l lw 2 t 'h = 2 cm', '' index 3 w l lw 2 t 'h = 3 cm', '' index 4 w l dt 2 "
+      "lw 2 t "
+      "'h = 2 cm, spin reversed'\n");
+  std::printf("%s\n", figure ? "wrote cylinder_path.csv and cylinder_path.png"
+                             : "wrote cylinder_path.csv (no gnuplot: no figure)");
   // The checks this example's test relies on.
   const bool straight = std::fabs(runs[0].path.back()[1]) < 1e-12;
   const bool curves =

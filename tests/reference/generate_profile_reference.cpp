@@ -116,10 +116,10 @@ big theta_integral(quad& q, quantity what, const big& r, const big& eps, const b
     const big inv = 1 / (1 + t);
     const big h = 4 * t * inv * inv;  // sin²(θ/2) = (1 − cosθ)/2
     const big rho2 = d * d + four_r_eps * h;
-    if (rho2 == 0) return big(0);  // ρ = 0: a single point, measure zero
+    if (rho2 == 0) return big(0);                   // ρ = 0: a single point, measure zero
     const big jac_over_rho = 4 * inv / sqrt(rho2);  // (dθ/du)/ρ
     if (what == quantity::force) return big((2 * r * h - d) * jac_over_rho);  // (ε − r cosθ)/ρ
-    return big(r * (d + 2 * eps * h) * jac_over_rho);                        // r (r − ε cosθ)/ρ
+    return big(r * (d + 2 * eps * h) * jac_over_rho);  // r (r − ε cosθ)/ρ
   };
   return integrate01(q.inner, f, big(0), big(1), tol, q.worst_inner);
 }
@@ -131,9 +131,9 @@ big theta_integral(quad& q, quantity what, const big& r, const big& eps, const b
 
 struct profile {
   std::string name;
-  bool ring = false;   // all load on r = 1
-  bool phi = false;    // u = φ, r = sin φ
-  big u0, u1;          // range of u
+  bool ring = false;  // all load on r = 1
+  bool phi = false;   // u = φ, r = sin φ
+  big u0, u1;         // range of u
   std::vector<big> breaks;
   std::function<big(const big& u, const big& u_mid)> weight;  // u_mid: midpoint of the piece
   big norm;
@@ -294,8 +294,8 @@ values compute(quad& q, const profile& p, const big& eps, const big& tol) {
 std::vector<double> eps_grid() {
   std::vector<double> e;
   for (int k = -24; k <= 24; ++k) e.push_back(std::pow(10.0, k / 4.0));
-  for (double x : {0.125, 0.25, 0.5, 0.653, 0.9, 0.99, 0.999, 0.999999, 1.0, 1.000001, 1.001,
-                   1.01, 1.1, 2.0, 8.0, 0.124, 0.126, 0.499, 0.501})
+  for (double x : {0.125, 0.25, 0.5, 0.653, 0.9, 0.99, 0.999, 0.999999, 1.0, 1.000001, 1.001, 1.01,
+                   1.1, 2.0, 8.0, 0.124, 0.126, 0.499, 0.501})
     e.push_back(x);
   std::sort(e.begin(), e.end());
   e.erase(std::unique(e.begin(), e.end()), e.end());
@@ -345,8 +345,7 @@ std::vector<values> run(const std::vector<profile>& ps, const std::vector<job>& 
       out[i] = compute(q, ps[jobs[i].profile], big(jobs[i].eps), jobs[i].tol);
       std::lock_guard<std::mutex> lock(mu);
       ++done;
-      const double s =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::fprintf(stderr, "\r[%s] %zu / %zu  (%.0f s)   ", label, done, jobs.size(), s);
       if (--left[jobs[i].profile] == 0)
         std::fprintf(stderr, "\n[%s] profile %s done at %.0f s\n", label,
@@ -359,7 +358,8 @@ std::vector<values> run(const std::vector<profile>& ps, const std::vector<job>& 
   std::vector<std::thread> workers;
   for (int t = 0; t < 2; ++t) workers.emplace_back(work);
   for (auto& w : workers) w.join();
-  std::fprintf(stderr, "\r[%s] %zu jobs in %.0f s; largest tanh_sinh error/L1: outer %.1e, inner %.1e\n",
+  std::fprintf(stderr,
+               "\r[%s] %zu jobs in %.0f s; largest tanh_sinh error/L1: outer %.1e, inner %.1e\n",
                label, jobs.size(),
                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
                total.worst_outer, total.worst_inner);
@@ -413,16 +413,15 @@ int compare(const char* file, const big& tol) {
   double worst = 0;
   std::size_t worst_i = 0;
   for (std::size_t i = 0; i < jobs.size(); ++i) {
-    const double d = std::max(rel(got[i].force, expected[i].force),
-                              rel(got[i].torque, expected[i].torque));
+    const double d =
+        std::max(rel(got[i].force, expected[i].force), rel(got[i].torque, expected[i].torque));
     if (d > worst) {
       worst = d;
       worst_i = i;
     }
   }
-  std::printf("compared %zu rows (every 10th): largest relative difference %.2e%s%s\n",
-              jobs.size(), worst, jobs.empty() ? "" : " at ",
-              jobs.empty() ? "" : lines[worst_i].c_str());
+  std::printf("compared %zu rows (every 10th): largest relative difference %.2e%s%s\n", jobs.size(),
+              worst, jobs.empty() ? "" : " at ", jobs.empty() ? "" : lines[worst_i].c_str());
   return worst > 1e-20 ? 1 : 0;
 }
 
@@ -531,7 +530,8 @@ int main(int argc, char** argv) {
   if (!(worst_disk < 1e-22)) ok = false;
 
   // 2. Exact sanity facts.
-  std::fprintf(stderr, "\nsanity (limits; deviations are the O(ε)/O(1/ε²) approach, not errors):\n");
+  std::fprintf(stderr,
+               "\nsanity (limits; deviations are the O(ε)/O(1/ε²) approach, not errors):\n");
   std::fprintf(stderr, "%-14s %-24s %-24s %-24s %-24s\n", "profile", "F/eps/(<1/r>/2)-1 @1e-6",
                "T/<r>-1 @1e-6", "eps*T/(<r2>/2)-1 @1e6", "1-F @1e6");
   for (std::size_t p = 0; p < ps.size(); ++p) {
@@ -568,11 +568,12 @@ int main(int argc, char** argv) {
       const values inv = compute(q, ps[ring], 1 / big(e), tol);
       const double d1 = rel(value_of(ring, e).force, inv.torque);
       const double d2 = rel(inv.force, value_of(ring, e).torque);
-      std::fprintf(stderr, "ring: F(%g)/T(1/%g)-1 = %.2e, F(1/%g)/T(%g)-1 = %.2e\n", e, e, d1, e,
-                   e, d2);
+      std::fprintf(stderr, "ring: F(%g)/T(1/%g)-1 = %.2e, F(1/%g)/T(%g)-1 = %.2e\n", e, e, d1, e, e,
+                   d2);
       worst_recip = std::max({worst_recip, d1, d2});
     }
-    std::snprintf(buf, sizeof buf, "self-check: ring F(eps) = T(1/eps): largest relative difference %.2e",
+    std::snprintf(buf, sizeof buf,
+                  "self-check: ring F(eps) = T(1/eps): largest relative difference %.2e",
                   worst_recip);
     std::fprintf(stderr, "%s\n", buf);
     notes.push_back(buf);
@@ -587,10 +588,11 @@ int main(int argc, char** argv) {
                    fmt(value_of(bous, e).force).c_str(), fmt(exact).c_str(), d);
       worst_b = std::max(worst_b, d);
     }
-    std::snprintf(buf, sizeof buf,
-                  "self-check: boussinesq F = (asin(k)/k + sqrt(1-k^2))/2, k = 1/eps, at eps = 1, 2, 8: "
-                  "largest relative difference %.2e",
-                  worst_b);
+    std::snprintf(
+        buf, sizeof buf,
+        "self-check: boussinesq F = (asin(k)/k + sqrt(1-k^2))/2, k = 1/eps, at eps = 1, 2, 8: "
+        "largest relative difference %.2e",
+        worst_b);
     std::fprintf(stderr, "%s\n", buf);
     notes.push_back(buf);
     if (!(worst_b < 1e-22)) ok = false;
@@ -631,22 +633,38 @@ int main(int argc, char** argv) {
     return 1;
   }
 
-  std::printf("# spinslide reference: friction force F and torque T of a flat circular contact with an\n");
+  std::printf(
+      "# spinslide reference: friction force F and torque T of a flat circular contact with an\n");
   std::printf("# axisymmetric pressure p(r), from the defining area integrals\n");
-  std::printf("#   F(eps) = int p (eps - y)/rho dA / int p dA,  T(eps) = int p (x^2 + y^2 - eps y)/rho dA / int p dA,\n");
+  std::printf(
+      "#   F(eps) = int p (eps - y)/rho dA / int p dA,  T(eps) = int p (x^2 + y^2 - eps y)/rho dA "
+      "/ int p dA,\n");
   std::printf("#   rho = sqrt(x^2 + (y - eps)^2), unit disk, eps = v/(R omega)\n");
-  std::printf("# generated by tests/reference/generate_profile_reference.cpp: nested 2-D tanh_sinh quadrature\n");
-  std::printf("# of the raw polar integrand (no closed-form inner integral, no elliptic integrals),\n");
-  std::printf("# cpp_bin_float_50, tolerance %s per level (inner level scaled by min(eps,1/eps)/100 for\n",
-              tol_text.c_str());
-  std::printf("# cancellation), r split at eps and at profile breakpoints, r = sin(phi) for hertz/boussinesq.\n");
-  std::printf("# profiles: annulus_0.125 p=1 on 1/8<=r<=1; hertz p=sqrt(1-r^2); boussinesq p=1/sqrt(1-r^2);\n");
-  std::printf("#   ring: all load on r=1; two_tier: p1 on r<1/2, p2 on 1/2<r<=1, inner 60%% / outer 40%% of load;\n");
-  std::printf("#   parabolic p=1-r^2.  (The uniform disk is computed for the self-check only; not listed.)\n");
+  std::printf(
+      "# generated by tests/reference/generate_profile_reference.cpp: nested 2-D tanh_sinh "
+      "quadrature\n");
+  std::printf(
+      "# of the raw polar integrand (no closed-form inner integral, no elliptic integrals),\n");
+  std::printf(
+      "# cpp_bin_float_50, tolerance %s per level (inner level scaled by min(eps,1/eps)/100 for\n",
+      tol_text.c_str());
+  std::printf(
+      "# cancellation), r split at eps and at profile breakpoints, r = sin(phi) for "
+      "hertz/boussinesq.\n");
+  std::printf(
+      "# profiles: annulus_0.125 p=1 on 1/8<=r<=1; hertz p=sqrt(1-r^2); boussinesq "
+      "p=1/sqrt(1-r^2);\n");
+  std::printf(
+      "#   ring: all load on r=1; two_tier: p1 on r<1/2, p2 on 1/2<r<=1, inner 60%% / outer 40%% "
+      "of load;\n");
+  std::printf(
+      "#   parabolic p=1-r^2.  (The uniform disk is computed for the self-check only; not "
+      "listed.)\n");
   for (const std::string& n : notes) std::printf("# %s\n", n.c_str());
   std::printf("# largest tanh_sinh error estimate / L1: outer %.1e, inner %.1e; run time %.0f s\n",
               stats.worst_outer, stats.worst_inner, seconds);
-  std::printf("# columns: profile, eps as hex float (exact), eps decimal, F, T (32 significant digits)\n");
+  std::printf(
+      "# columns: profile, eps as hex float (exact), eps decimal, F, T (32 significant digits)\n");
   std::printf("profile,eps_hex,eps,force,torque\n");
   for (std::size_t i = 0; i < n_table; ++i) {
     if (jobs[i].profile == uniform) continue;
