@@ -23,6 +23,10 @@
 #include <boost/math/tools/precision.hpp>
 #include <boost/math/tools/promotion.hpp>
 #include <boost/math/tools/series.hpp>
+#include <cstddef>
+#if __cplusplus >= 202002L && __has_include(<span>)
+#include <span>
+#endif
 
 namespace spinslide {
 
@@ -35,6 +39,12 @@ struct force_torque_result {
 };
 
 namespace detail {
+
+// Keeps an output pointer out of template deduction, so that nullptr works.
+template <class T>
+struct non_deduced {
+  using type = T;
+};
 
 // The state shared by 𝓕, 𝓣 and 𝓕' at one ε (theory, "Evaluation").
 //
@@ -395,6 +405,46 @@ template <class T>
 force_torque_result<typename boost::math::tools::promote_args<T>::type> force_torque(T eps) {
   return force_torque(eps, boost::math::policies::policy<>());
 }
+
+/// 𝓕 and 𝓣 for `count` ratios at once, for simulators: force[i] and
+/// torque[i] receive 𝓕(eps[i]) and 𝓣(eps[i]).  Either output pointer may be
+/// null to skip it.  Errors as for force_torque(), element by element; with
+/// the default policy the first bad ratio throws and earlier outputs are
+/// already written.
+template <class Real, class Policy>
+void force_torque_batch(const Real* eps, std::size_t count,
+                        typename detail::non_deduced<Real>::type* force,
+                        typename detail::non_deduced<Real>::type* torque, const Policy& pol) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto ft = spinslide::force_torque(eps[i], pol);
+    if (force) force[i] = ft.force;
+    if (torque) torque[i] = ft.torque;
+  }
+}
+/// force_torque_batch with the default policy.
+template <class Real>
+void force_torque_batch(const Real* eps, std::size_t count,
+                        typename detail::non_deduced<Real>::type* force,
+                        typename detail::non_deduced<Real>::type* torque) {
+  force_torque_batch(eps, count, force, torque, boost::math::policies::policy<>());
+}
+
+#if defined(__cpp_lib_span)
+/// force_torque_batch over spans (C++20); `force` and `torque` must be at
+/// least as long as `eps` (otherwise a domain error through the policy).
+template <class Real, class Policy = boost::math::policies::policy<>>
+void force_torque_batch(std::span<const Real> eps, std::span<Real> force, std::span<Real> torque,
+                        const Policy& pol = Policy()) {
+  if (force.size() < eps.size() || torque.size() < eps.size()) {
+    boost::math::policies::raise_domain_error<Real>(
+        "spinslide::force_torque_batch<%1%>(span)",
+        "Got an output span shorter than the input (%1% elements needed).",
+        static_cast<Real>(eps.size()), pol);
+    return;
+  }
+  force_torque_batch(eps.data(), eps.size(), force.data(), torque.data(), pol);
+}
+#endif
 
 }  // namespace spinslide
 
