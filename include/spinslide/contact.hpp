@@ -48,7 +48,7 @@ decltype(auto) component(V& v) {
 }
 template <int I, class V>
 auto get(const V& v) {
-  return component<I>(const_cast<V&>(v));
+  return component<I>(v);  // V deduced const: reads through the const accessors
 }
 template <int I, class V, class Real>
 void set(V& v, Real value) {
