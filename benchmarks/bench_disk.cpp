@@ -2,8 +2,18 @@
 //  Distributed under the Boost Software License, Version 1.0.
 //
 // Cost of one (𝓕, 𝓣) pair of the uniform disk over 4096 log-uniform ε in
-// [1e-3, 1e3], against the literal closed form with Boost's ellint_1/ellint_2
-// (default policy: double promoted to long double) as the baseline.
+// [1e-3, 1e3], against, in the same binary:
+//   - the literal closed form with Boost's ellint_1/ellint_2, default policy
+//     (double promoted to long double): the baseline;
+//   - the same with promote_double<false>;
+//   - K and E together by the arithmetic-geometric mean, then the closed form;
+//   - Boost's tanh_sinh quadrature of the defining integral (inner integral
+//     in closed form, as in tests/reference/generate_disk_reference.cpp);
+//   - a degree-8/8 rational for each of 𝓕 and 𝓣: a speed bound, not a
+//     method (its accuracy is printed; it cannot follow the ε = 1 singularity).
+// "scalar" benchmarks hand each result to benchmark::DoNotOptimize, which
+// keeps the loop scalar; "array" benchmarks write output arrays in a plain
+// loop, which the compiler may vectorize.
 //   ./build/release/benchmarks/bench_disk
 #include <benchmark/benchmark.h>
 
@@ -12,13 +22,18 @@
 #include <spinslide/tabulated.hpp>
 
 #include <boost/math/constants/constants.hpp>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <boost/math/special_functions/asinh.hpp>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "ratio_reporter.hpp"
@@ -37,14 +52,12 @@ const std::vector<Real>& inputs() {
   return xs;
 }
 
+using pair = spinslide::force_torque_result<double>;
+
 // The paper's closed forms (torque corrected, docs/theory.md §3), literally.
-template <class Policy>
-spinslide::force_torque_result<double> literal(double e, const Policy& pol) {
-  using boost::math::ellint_1;
-  using boost::math::ellint_2;
+pair closed_form(double e, double K, double E) {
   const double pi = boost::math::constants::pi<double>();
   const double k = e <= 1 ? e : 1 / e, m = k * k;
-  const double K = ellint_1(k, pol), E = ellint_2(k, pol);
   if (e <= 1)
     return {4 * ((1 + m) * E - (1 - m) * K) / (3 * pi * k),
             4 * ((4 - 2 * m) * E - (1 - m) * K) / (9 * pi)};
@@ -52,8 +65,155 @@ spinslide::force_torque_result<double> literal(double e, const Policy& pol) {
           4 * ((4 * m - 2) * E + (1 - m) * (2 - 3 * m) * K) / (9 * pi * k * m)};
 }
 
+template <class Policy>
+pair literal(double e, const Policy& pol) {
+  const double k = e <= 1 ? e : 1 / e;
+  return closed_form(e, boost::math::ellint_1(k, pol), boost::math::ellint_2(k, pol));
+}
+
+// K(k) and E(k) by the AGM (DLMF 19.8.1, 19.8.6): a₀ = 1, b₀ = k′, c₀ = k;
+// K = π/(2 a_N), E = K (1 − Σ 2^(n−1) c_n²).
+pair agm(double e) {
+  const double k = e <= 1 ? e : 1 / e;
+  double a = 1, b = std::sqrt((1 - k) * (1 + k)), c = k, sum = c * c / 2, w = 0.5;
+  // c_{n+1} = c_n²/(4a_{n+1}): once c is below 1e-15 a it is at the rounding
+  // level; the bound guards against a stall there.
+  for (int n = 0; n < 64 && std::fabs(c) > 1e-15 * a; ++n) {
+    const double an = (a + b) / 2;
+    c = (a - b) / 2;
+    b = std::sqrt(a * b);
+    a = an;
+    w *= 2;
+    sum += w * c * c;
+  }
+  const double K = boost::math::constants::pi<double>() / (2 * a);
+  return closed_form(e, K, K * (1 - sum));
+}
+
+// tanh_sinh over y of the inner x-integrals of the area integral (theory (D)).
+pair quadrature(double eps) {
+  static boost::math::quadrature::tanh_sinh<double> q;
+  auto parts = [eps](double y, double& X, double& S, double& c, double& L) {
+    X = std::sqrt((1 - y) * (1 + y));
+    c = y - eps;
+    S = std::sqrt(X * X + c * c);
+    L = c == 0 ? 0.0 : boost::math::asinh(X / std::fabs(c));
+  };
+  auto f = [&](double y) {
+    double X, S, c, L;
+    parts(y, X, S, c, L);
+    return -2 * c * L;
+  };
+  auto t = [&](double y) {
+    double X, S, c, L;
+    parts(y, X, S, c, L);
+    return X * S + c * (y + eps) * L;
+  };
+  auto over_y = [&](auto g) {
+    const double tol = 1e-10;
+    if (eps < 1) return q.integrate(g, -1.0, eps, tol) + q.integrate(g, eps, 1.0, tol);
+    return q.integrate(g, -1.0, 1.0, tol);
+  };
+  const double pi = boost::math::constants::pi<double>();
+  return {over_y(f) / pi, over_y(t) / pi};
+}
+
+// P₈/Q₈ for g_F(t) = 𝓕/t and g_T(t) = 𝓣/(1 − t), t = ε/(1 + ε), fitted by
+// linearized least squares (P − g·Q = 0, Q's constant term 1) at 400
+// Chebyshev points, solved by Householder QR in long double.
+struct rational {
+  std::array<double, 9> p, q;  // q[0] = 1
+  double operator()(double u) const {
+    double n = p[8], d = q[8];
+    for (int k = 7; k >= 0; --k) {
+      n = n * u + p[k];
+      d = d * u + q[k];
+    }
+    return n / d;
+  }
+};
+
+std::vector<long double> least_squares(std::vector<std::vector<long double>> A,
+                                       std::vector<long double> b) {
+  const std::size_t rows = A.size(), cols = A[0].size();
+  for (std::size_t j = 0; j < cols; ++j) {
+    long double norm = 0;
+    for (std::size_t i = j; i < rows; ++i) norm += A[i][j] * A[i][j];
+    norm = std::sqrt(norm);
+    if (A[j][j] > 0) norm = -norm;
+    std::vector<long double> v(rows, 0);
+    for (std::size_t i = j; i < rows; ++i) v[i] = A[i][j];
+    v[j] -= norm;
+    long double vv = 0;
+    for (std::size_t i = j; i < rows; ++i) vv += v[i] * v[i];
+    if (vv == 0) continue;
+    auto reflect = [&](auto get, auto set) {
+      long double s = 0;
+      for (std::size_t i = j; i < rows; ++i) s += v[i] * get(i);
+      s = 2 * s / vv;
+      for (std::size_t i = j; i < rows; ++i) set(i, get(i) - s * v[i]);
+    };
+    for (std::size_t c = j; c < cols; ++c)
+      reflect([&](std::size_t i) { return A[i][c]; },
+              [&](std::size_t i, long double x) { A[i][c] = x; });
+    reflect([&](std::size_t i) { return b[i]; }, [&](std::size_t i, long double x) { b[i] = x; });
+  }
+  std::vector<long double> x(cols);
+  for (std::size_t j = cols; j-- > 0;) {
+    long double s = b[j];
+    for (std::size_t c = j + 1; c < cols; ++c) s -= A[j][c] * x[c];
+    x[j] = s / A[j][j];
+  }
+  return x;
+}
+
+std::pair<rational, rational> fit_rationals() {
+  const int n = 400;
+  std::vector<std::vector<long double>> AF, AT;
+  std::vector<long double> bF, bT;
+  for (int j = 0; j < n; ++j) {
+    const long double u = std::cos(boost::math::constants::pi<long double>() * (j + 0.5L) / n);
+    const long double t = (1 + u) / 2, eps = t / (1 - t);
+    const auto ft = spinslide::force_torque(eps);
+    const long double gF = ft.force / t, gT = ft.torque / (1 - t);
+    std::vector<long double> rowF, rowT;
+    long double w = 1;
+    for (int k = 0; k <= 8; ++k, w *= u) {
+      rowF.push_back(w);
+      rowT.push_back(w);
+    }
+    w = u;
+    for (int k = 1; k <= 8; ++k, w *= u) {
+      rowF.push_back(-gF * w);
+      rowT.push_back(-gT * w);
+    }
+    AF.push_back(rowF);
+    AT.push_back(rowT);
+    bF.push_back(0 + gF);
+    bT.push_back(0 + gT);
+  }
+  auto make = [](const std::vector<long double>& x) {
+    rational r;
+    for (int k = 0; k <= 8; ++k) r.p[k] = static_cast<double>(x[k]);
+    r.q[0] = 1;
+    for (int k = 1; k <= 8; ++k) r.q[k] = static_cast<double>(x[8 + k]);
+    return r;
+  };
+  return {make(least_squares(AF, bF)), make(least_squares(AT, bT))};
+}
+
+const std::pair<rational, rational>& rationals() {
+  static const auto r = fit_rationals();
+  return r;
+}
+
+inline pair rational_pair(double eps, const rational& rf, const rational& rt) {
+  const double s = 1 / (1 + eps), t = eps * s, u = 2 * t - 1;
+  return {t * rf(u), s * rt(u)};
+}
+
 template <class Real, class F>
-void run(benchmark::State& state, F f) {
+void scalar(benchmark::State& state, F f) {
   const auto& xs = inputs<Real>();
   for (auto _ : state) {
     for (const Real& x : xs) {
@@ -65,33 +225,69 @@ void run(benchmark::State& state, F f) {
 }
 
 void literal_boost_default_policy(benchmark::State& s) {
-  run<double>(s, [](double e) { return literal(e, boost::math::policies::policy<>()); });
+  scalar<double>(s, [](double e) { return literal(e, boost::math::policies::policy<>()); });
 }
 void literal_boost_no_promotion(benchmark::State& s) {
   using namespace boost::math::policies;
-  run<double>(s, [](double e) { return literal(e, policy<promote_double<false>>()); });
+  scalar<double>(s, [](double e) { return literal(e, policy<promote_double<false>>()); });
+}
+void agm_closed_form(benchmark::State& s) { scalar<double>(s, agm); }
+void boost_tanh_sinh_quadrature(benchmark::State& s) { scalar<double>(s, quadrature); }
+void rational_8_8_scalar(benchmark::State& s) {
+  const rational rf = rationals().first, rt = rationals().second;
+  scalar<double>(s, [&](double e) { return rational_pair(e, rf, rt); });
+}
+void rational_8_8_array(benchmark::State& s) {
+  const rational rf = rationals().first, rt = rationals().second;
+  const auto& xs = inputs<double>();
+  std::vector<double> f(xs.size()), t(xs.size());
+  for (auto _ : s) {
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const pair r = rational_pair(xs[i], rf, rt);
+      f[i] = r.force;
+      t[i] = r.torque;
+    }
+    benchmark::DoNotOptimize(f.data());
+    benchmark::DoNotOptimize(t.data());
+    benchmark::ClobberMemory();
+  }
+  s.SetItemsProcessed(s.iterations() * static_cast<int64_t>(xs.size()));
 }
 void spinslide_force_torque_double(benchmark::State& s) {
-  run<double>(s, [](double e) { return spinslide::force_torque(e); });
+  scalar<double>(s, [](double e) { return spinslide::force_torque(e); });
 }
 void spinslide_force_plus_torque_double(benchmark::State& s) {
-  run<double>(s, [](double e) { return spinslide::force(e) + spinslide::torque(e); });
+  scalar<double>(s, [](double e) { return spinslide::force(e) + spinslide::torque(e); });
 }
+template <class Real>
+void spinslide_batch(benchmark::State& s) {
+  const auto& xs = inputs<Real>();
+  std::vector<Real> f(xs.size()), t(xs.size());
+  for (auto _ : s) {
+    spinslide::force_torque_batch(xs.data(), xs.size(), f.data(), t.data());
+    benchmark::DoNotOptimize(f.data());
+    benchmark::DoNotOptimize(t.data());
+    benchmark::ClobberMemory();
+  }
+  s.SetItemsProcessed(s.iterations() * static_cast<int64_t>(xs.size()));
+}
+void spinslide_batch_double(benchmark::State& s) { spinslide_batch<double>(s); }
 void spinslide_force_torque_float(benchmark::State& s) {
-  run<float>(s, [](float e) { return spinslide::force_torque(e); });
+  scalar<float>(s, [](float e) { return spinslide::force_torque(e); });
 }
+void spinslide_batch_float(benchmark::State& s) { spinslide_batch<float>(s); }
 void spinslide_force_torque_long_double(benchmark::State& s) {
-  run<long double>(s, [](long double e) { return spinslide::force_torque(e); });
+  scalar<long double>(s, [](long double e) { return spinslide::force_torque(e); });
 }
 void spinslide_force_torque_cpp_bin_float_50(benchmark::State& s) {
   using mp = boost::multiprecision::cpp_bin_float_50;
-  run<mp>(s, [](const mp& e) { return spinslide::force_torque(e); });
+  scalar<mp>(s, [](const mp& e) { return spinslide::force_torque(e); });
 }
 
 // The contact law per call, at the same ratios: v = (ε cos φ, ε sin φ), ω = 1, a = 1.
 void contact_law_uniform_disk(benchmark::State& s) {
   static const spinslide::contact_law<> law;
-  run<double>(s, [](double e) {
+  scalar<double>(s, [](double e) {
     const std::array<double, 2> v = {0.6 * e, 0.8 * e};
     return law(v, 1.0, 1.0, 2.0, 0.5);
   });
@@ -99,34 +295,72 @@ void contact_law_uniform_disk(benchmark::State& s) {
 void contact_law_tabulated_disk(benchmark::State& s) {
   static const spinslide::contact_law<spinslide::tabulated_profile<>> law{
       spinslide::tabulated_profile<>(spinslide::uniform_disk<>())};
-  run<double>(s, [](double e) {
+  scalar<double>(s, [](double e) {
     const std::array<double, 2> v = {0.6 * e, 0.8 * e};
     return law(v, 1.0, 1.0, 2.0, 0.5);
   });
 }
 void tabulated_disk_force_torque(benchmark::State& s) {
   static const spinslide::tabulated_profile<> tab{spinslide::uniform_disk<>()};
-  run<double>(s, [](double e) { return tab.force_torque(e); });
+  scalar<double>(s, [](double e) { return tab.force_torque(e); });
 }
 
 BENCHMARK(literal_boost_default_policy);
 BENCHMARK(literal_boost_no_promotion);
+BENCHMARK(agm_closed_form);
+BENCHMARK(boost_tanh_sinh_quadrature);
+BENCHMARK(rational_8_8_scalar);
+BENCHMARK(rational_8_8_array);
 BENCHMARK(spinslide_force_torque_double);
+BENCHMARK(spinslide_batch_double);
 BENCHMARK(spinslide_force_plus_torque_double);
 BENCHMARK(spinslide_force_torque_float);
+BENCHMARK(spinslide_batch_float);
 BENCHMARK(spinslide_force_torque_long_double);
 BENCHMARK(spinslide_force_torque_cpp_bin_float_50);
 BENCHMARK(contact_law_uniform_disk);
 BENCHMARK(tabulated_disk_force_torque);
 BENCHMARK(contact_law_tabulated_disk);
 
+// The largest relative error of each double method over the benchmark's
+// inputs, against spinslide's long double evaluation.
+void print_accuracy() {
+  const rational rf = rationals().first, rt = rationals().second;
+  const std::pair<const char*, pair (*)(double)> methods[] = {
+      {"literal_boost_default_policy",
+       [](double e) { return literal(e, boost::math::policies::policy<>()); }},
+      {"agm_closed_form", agm},
+      {"boost_tanh_sinh_quadrature", quadrature},
+      {"spinslide_force_torque_double", [](double e) { return spinslide::force_torque(e); }},
+  };
+  std::printf("largest relative error over the inputs (vs long double):\n");
+  auto report = [](const char* name, auto f) {
+    double worst = 0;
+    for (double e : inputs<double>()) {
+      const auto exact = spinslide::force_torque(static_cast<long double>(e));
+      const pair r = f(e);
+      worst = std::max({worst, static_cast<double>(std::fabs(r.force - exact.force) / exact.force),
+                        static_cast<double>(std::fabs(r.torque - exact.torque) / exact.torque)});
+    }
+    std::printf("  %-40s %.2e\n", name, worst);
+  };
+  for (const auto& m : methods) report(m.first, m.second);
+  report("rational_8_8", [&](double e) { return rational_pair(e, rf, rt); });
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
+  print_accuracy();
   spinslide_bench::ratio_reporter reporter(
       "literal_boost_default_policy",
-      {{"contact_law_uniform_disk", "spinslide_force_torque_double"},
+      {{"spinslide_force_torque_double", "rational_8_8_scalar"},
+       {"spinslide_batch_double", "rational_8_8_array"},
+       {"spinslide_force_torque_float", "rational_8_8_scalar"},
+       {"spinslide_batch_float", "rational_8_8_array"},
+       {"contact_law_uniform_disk", "spinslide_force_torque_double"},
        {"contact_law_tabulated_disk", "tabulated_disk_force_torque"}});
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();

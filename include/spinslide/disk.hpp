@@ -13,6 +13,8 @@
 #ifndef SPINSLIDE_DISK_HPP
 #define SPINSLIDE_DISK_HPP
 
+#include <spinslide/detail/disk_fast.hpp>
+
 #include <boost/cstdint.hpp>
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/policies/error_handling.hpp>
@@ -306,6 +308,13 @@ typename disk_types<T, Policy>::result_type disk_public(T eps, disk_quantity q,
   const typename types::forwarding_policy pol;
   result_type invalid;
   if (domain_error_ratio(static_cast<result_type>(eps), function, invalid, pol)) return invalid;
+  if constexpr (has_fast_disk<result_type>::value) {
+    if (q == disk_quantity::force || q == disk_quantity::torque) {
+      result_type f, t;
+      disk_fast(static_cast<result_type>(eps), f, t);
+      return q == disk_quantity::force ? f : t;
+    }
+  }
   const value_type v = disk_imp(static_cast<value_type>(eps), q,
                                 series_threshold<result_type, value_type>(), function, pol);
   return boost::math::policies::checked_narrowing_cast<result_type,
@@ -386,6 +395,11 @@ force_torque_result<typename boost::math::tools::promote_args<T>::type> force_to
   result_type invalid;
   if (detail::domain_error_ratio(static_cast<result_type>(eps), function, invalid, pol))
     return {invalid, invalid};
+  if constexpr (detail::has_fast_disk<result_type>::value) {
+    force_torque_result<result_type> r;
+    detail::disk_fast(static_cast<result_type>(eps), r.force, r.torque);
+    return r;
+  }
   const value_type e = static_cast<value_type>(eps);
   value_type f, t;
   if (detail::disk_limit_value(e, detail::disk_quantity::force, f)) {
@@ -407,14 +421,27 @@ force_torque_result<typename boost::math::tools::promote_args<T>::type> force_to
 }
 
 /// 𝓕 and 𝓣 for `count` ratios at once, for simulators: force[i] and
-/// torque[i] receive 𝓕(eps[i]) and 𝓣(eps[i]).  Either output pointer may be
-/// null to skip it.  Errors as for force_torque(), element by element; with
-/// the default policy the first bad ratio throws and earlier outputs are
-/// already written.
+/// torque[i] receive 𝓕(eps[i]) and 𝓣(eps[i]), the same values as
+/// force_torque(eps[i]).  Either output pointer may be null to skip it.
+/// Errors as for force_torque(), element by element; with the default policy
+/// the first bad ratio throws and earlier outputs are already written.
+/// For float and double the loop is branch-free and vectorizes when the
+/// target has gathers (e.g. -mavx2 or -march=native); see docs/performance.md.
 template <class Real, class Policy>
 void force_torque_batch(const Real* eps, std::size_t count,
                         typename detail::non_deduced<Real>::type* force,
                         typename detail::non_deduced<Real>::type* torque, const Policy& pol) {
+  if constexpr (detail::has_fast_disk<Real>::value) {
+    // One vectorizable pass for the check, then one for the values; a bad
+    // ratio falls through to the element-by-element loop below, which
+    // reports it through the policy at the right element.
+    int invalid = 0;
+    for (std::size_t i = 0; i < count; ++i) invalid |= !(eps[i] >= 0);  // NaN or < 0
+    if (!invalid) {
+      detail::disk_fast_batch(eps, count, force, torque);
+      return;
+    }
+  }
   for (std::size_t i = 0; i < count; ++i) {
     const auto ft = spinslide::force_torque(eps[i], pol);
     if (force) force[i] = ft.force;

@@ -1,0 +1,288 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//
+// Generates include/spinslide/detail/disk_tables.hpp: the piecewise
+// polynomial tables of the fast double and float paths of disk.hpp
+// (docs/theory.md §4, "The fast path").
+//
+// With k = min(ε, 1/ε) and y = 1 − k², the uniform disk's force and torque
+// are, exactly,
+//   ε ≤ 1:  𝓕 = ε·g(y),   𝓣 = t₁(y)
+//   ε > 1:  𝓕 = g(y),     𝓣 = k·t₂(y)
+// with three functions of y ∈ [0, 1], each bounded and bounded away from 0
+// (docs/theory.md (C1a), (C1b), (C2a), (C2b), with m = 1 − y):
+//   g  = 4[(1 + m)E − yK] / (3π m)               g(1) = 1,    g(0) = 8/(3π)
+//   t₁ = 4[(4 − 2m)E − yK] / (9π)                t₁(1) = 2/3, t₁(0) = 8/(9π)
+//   t₂ = 4[(4m − 2)E + y(2 − 3m)K] / (9π m²)      t₂(1) = 1/4, t₂(0) = 8/(9π)
+// K = K(k), E = E(k) evaluated here by Boost's ellint_1/ellint_2 in
+// cpp_bin_float_50 (the cancellations of these forms as m → 0 cost at most
+// 10 of the 50 digits at the sample points used).
+//
+// Both tables are of double and evaluated in double: float's is a smaller
+// one (lower degree, fewer pieces), whose result is then rounded to float.
+//
+// The pieces are addressed by the bits of y: piece i ≥ 1 of the table is
+// [2^(j−J)(1 + s/2^b), 2^(j−J)(1 + (s+1)/2^b)] with j = i >> b,
+// s = i & (2^b − 1), J binades and b index bits, so that the index is the
+// top bits of y's representation minus a constant.  Piece 0 is [0, 2^−J(1 + 2^−b)]:
+// the functions behave as P(y) + y² ln(y) Q(y) near y = 0 (ε = 1), and below
+// 2^−J the y² ln y part is under 2^−57 relative, so a polynomial suffices.
+// Every piece is interpolated at Chebyshev points, truncated to the table's
+// degree, converted to monomials in x ∈ [−1, 1] (x = y·scale + offset), and
+// rounded to the table's type; the values at y = 0 and y = 1 are pinned to
+// the correctly rounded limits.  Each table is then checked, in the table's
+// own arithmetic (the same Horner loop as the library), against the
+// multiprecision functions at random points of every piece; the largest
+// error is printed to stderr and written into the header.
+//
+//   ./build/release/tools/generate_disk_tables > include/spinslide/detail/disk_tables.hpp
+#include <spinslide/detail/piecewise_chebyshev.hpp>
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_2.hpp>
+#include <boost/math/special_functions/next.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using mp = boost::multiprecision::cpp_bin_float_50;
+using spinslide::detail::chebyshev_coefficients;
+using spinslide::detail::chebyshev_point;
+using spinslide::detail::chebyshev_to_monomial;
+
+// (g, t₁, t₂) at y ∈ [0, 1], the exact limits at the two ends.
+std::array<mp, 3> functions(const mp& y) {
+  using boost::math::constants::pi;
+  const mp p = pi<mp>();
+  if (y == 0) return {8 / (3 * p), 8 / (9 * p), 8 / (9 * p)};  // ε = 1: K = ∞, yK → 0, E = 1
+  if (y == 1) return {mp(1), mp(2) / 3, mp(1) / 4};            // ε = 0 or ∞
+  const mp m = 1 - y;
+  const mp K = boost::math::ellint_1(sqrt(m)), E = boost::math::ellint_2(sqrt(m));
+  return {4 * ((1 + m) * E - y * K) / (3 * p * m), 4 * ((4 - 2 * m) * E - y * K) / (9 * p),
+          4 * ((4 * m - 2) * E + y * (2 - 3 * m) * K) / (9 * p * m * m)};
+}
+
+struct layout {
+  const char* name;  // the result type the table serves; it is evaluated in double
+  double epsilon;    // of that type: the unit of the reported errors
+  int bits;          // b: 2^b pieces per binade
+  int binades;       // J: piece 0 is [0, 2^−J (1 + 2^−b)]
+  int degree;
+  int pieces() const { return binades << bits; }
+  std::pair<mp, mp> interval(int i) const {
+    const int per = 1 << bits;
+    if (i == 0) return {mp(0), ldexp(mp(1) + ldexp(mp(1), -bits), -binades)};
+    const int j = i >> bits, s = i & (per - 1);
+    const mp lo = ldexp(mp(1) + mp(s) / per, j - binades);
+    return {lo, lo + ldexp(mp(1), j - binades - bits)};
+  }
+};
+
+// One piece: x = y·scale + offset maps it onto [−1, 1]; coefficient k of
+// function f is c[3k + f].
+template <class Real>
+struct piece {
+  Real scale, offset;
+  std::vector<Real> c;
+};
+
+// The library's evaluation (disk_fast.hpp) of function f of a piece.
+template <class Real>
+Real evaluate(const piece<Real>& p, int degree, int f, Real y) {
+  const Real x = y * p.scale + p.offset;
+  Real s = p.c[3 * degree + f];
+  for (int k = degree; k-- > 0;) s = s * x + p.c[3 * k + f];
+  return s;
+}
+
+struct report {
+  double tail[3] = {0, 0, 0};   // largest truncated Chebyshev tail Σ|c_k|, relative, / epsilon
+  double worst[3] = {0, 0, 0};  // largest measured relative error / epsilon
+};
+
+template <class Real>
+std::vector<piece<Real>> build(const layout& L, report& r) {
+  const int n = L.degree + 1, sample = L.degree + 12;
+  const mp eps = L.epsilon;
+  std::vector<piece<Real>> table;
+  std::mt19937_64 rng(20261122);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int i = 0; i < L.pieces(); ++i) {
+    const auto iv = L.interval(i);
+    const mp mid = (iv.first + iv.second) / 2, half = (iv.second - iv.first) / 2;
+    std::vector<std::array<mp, 3>> v(sample);
+    for (int j = 0; j < sample; ++j) v[j] = functions(mid + half * chebyshev_point<mp>(j, sample));
+    piece<Real> p;
+    // Exact for pieces i ≥ 1: a power of two and an integer.
+    p.scale = static_cast<Real>(1 / half);
+    p.offset = static_cast<Real>(-mid / half);
+    p.c.resize(3 * n);
+    for (int f = 0; f < 3; ++f) {
+      std::vector<mp> values(sample), c(sample), m(n);
+      for (int j = 0; j < sample; ++j) values[j] = v[j][f];
+      chebyshev_coefficients(values.data(), sample, c.data());
+      mp tail = 0;
+      for (int k = n; k < sample; ++k) tail += abs(c[k]);
+      r.tail[f] = std::max(r.tail[f], static_cast<double>(tail / abs(c[0] / 2) / eps));
+      chebyshev_to_monomial(c.data(), n, m.data());
+      for (int k = 0; k < n; ++k) p.c[3 * k + f] = static_cast<Real>(m[k]);
+    }
+    // Pin the ends, y = 0 (ε = 1) and y = 1 (ε = 0 and ε = ∞), to the
+    // correctly rounded values, so that 𝓕(1) = 8/(3π), 𝓣(1) = 8/(9π),
+    // 𝓣(0) = 2/3 and 𝓕(∞) = 1 come out exactly: move the two lowest
+    // coefficients by the fewest ulps that achieve it (c₀'s ulp may exceed
+    // the result's, so c₁ takes most of it).  x = ±1 there, so the Horner
+    // steps s·x + c are exact products plus one rounding, with or without
+    // fused multiply-adds.
+    for (const mp& end : {iv.first, iv.second}) {
+      if (end != 0 && end != 1) continue;
+      const auto exact = functions(end);
+      const Real y = static_cast<Real>(end);
+      for (int f = 0; f < 3; ++f) {
+        const Real target = static_cast<Real>(exact[f]);
+        // First move c₀ by the whole difference (the lower-degree float table
+        // is off by far more than an ulp of double), then search.
+        for (int step = 0; step < 3; ++step) p.c[f] += target - evaluate(p, L.degree, f, y);
+        const Real c0 = p.c[f], c1 = p.c[3 + f];
+        bool pinned = false;
+        for (int a0 = 0; a0 <= 4 && !pinned; ++a0) {
+          for (int d0 : {a0, -a0}) {
+            for (int a1 = 0; a1 <= 1 << 14 && !pinned; ++a1) {
+              for (int d1 : {a1, -a1}) {
+                p.c[f] = boost::math::float_advance(c0, d0);
+                p.c[3 + f] = boost::math::float_advance(c1, d1);
+                if (evaluate(p, L.degree, f, y) == target) {
+                  pinned = true;
+                  break;
+                }
+              }
+            }
+            if (pinned) break;
+          }
+        }
+        if (!pinned) {
+          std::fprintf(stderr, "could not pin function %d at y = %g\n", f,
+                       static_cast<double>(end));
+          std::exit(1);
+        }
+      }
+    }
+    // Measure, in Real arithmetic, at both ends and at random points.
+    for (int t = 0; t < 300; ++t) {
+      const mp ym = t == 0 ? iv.first : t == 1 ? iv.second : mid + half * mp(u(rng));
+      const Real y = static_cast<Real>(ym);
+      if (mp(y) < iv.first || mp(y) > iv.second) continue;
+      const auto exact = functions(mp(y));
+      for (int f = 0; f < 3; ++f) {
+        const mp err = abs(mp(evaluate(p, L.degree, f, y)) - exact[f]) / exact[f] / eps;
+        r.worst[f] = std::max(r.worst[f], static_cast<double>(err));
+      }
+    }
+    table.push_back(std::move(p));
+  }
+  return table;
+}
+
+template <class Real>
+void emit(const layout& L, const char* table, const std::vector<piece<Real>>& t, const report& r) {
+  std::printf(
+      "\n// %s: %d index bits, %d binades, degree %d.  Largest truncated Chebyshev\n"
+      "// tail (relative, in units of epsilon): g %.2g, t1 %.2g, t2 %.2g.  Largest\n"
+      "// error measured by the generator: g %.3f, t1 %.3f, t2 %.3f epsilon.\n",
+      L.name, L.bits, L.binades, L.degree, r.tail[0], r.tail[1], r.tail[2], r.worst[0], r.worst[1],
+      r.worst[2]);
+  std::printf("struct %s_layout {\n", table);
+  std::printf("  static constexpr int index_bits = %d;\n", L.bits);
+  std::printf("  static constexpr int binades = %d;\n", L.binades);
+  std::printf("  static constexpr int degree = %d;\n", L.degree);
+  std::printf("  static constexpr int pieces = %d;\n", L.pieces());
+  std::printf("  static constexpr int mantissa_bits = %d;  // of double, in which y is indexed\n",
+              std::numeric_limits<double>::digits - 1);
+  std::printf(
+      "  // (representation of y) >> (mantissa_bits − index_bits), minus this, is the piece.\n");
+  std::printf("  static constexpr long long first_index = %lld;\n",
+              static_cast<long long>(std::numeric_limits<double>::max_exponent - 1 - L.binades)
+                  << L.bits);
+  std::printf("  static constexpr int stride = %d;  // scale, offset, (g, t1, t2) × (degree + 1)\n",
+              2 + 3 * (L.degree + 1));
+  std::printf("};\n");
+  std::printf("alignas(64) inline constexpr double %s[] = {\n", table);
+  const char* fmt = "%a";
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    std::printf("    // piece %zu\n   ", i);
+    std::vector<Real> row = {t[i].scale, t[i].offset};
+    row.insert(row.end(), t[i].c.begin(), t[i].c.end());
+    for (std::size_t k = 0; k < row.size(); ++k) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, fmt, static_cast<double>(row[k]));
+      std::printf(" %s,", buf);
+      if (k % 4 == 1 && k + 1 < row.size()) std::printf("\n   ");
+    }
+    std::printf("\n");
+  }
+  std::printf("};\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  layout D{"double", std::numeric_limits<double>::epsilon(), 3, 32, 8};
+  layout F{"float", std::numeric_limits<float>::epsilon(), 2, 16, 4};
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&] { return i + 1 < argc ? std::atoi(argv[++i]) : -1; };
+    if (a == "--double-bits")
+      D.bits = next();
+    else if (a == "--double-binades")
+      D.binades = next();
+    else if (a == "--double-degree")
+      D.degree = next();
+    else if (a == "--float-bits")
+      F.bits = next();
+    else if (a == "--float-binades")
+      F.binades = next();
+    else if (a == "--float-degree")
+      F.degree = next();
+    else {
+      std::fprintf(stderr, "usage: %s [--{double,float}-{bits,binades,degree} N]\n", argv[0]);
+      return 2;
+    }
+  }
+  report rd, rf;
+  const auto td = build<double>(D, rd);
+  std::fprintf(stderr, "double: tail g %.2g t1 %.2g t2 %.2g; measured g %.3f t1 %.3f t2 %.3f eps\n",
+               rd.tail[0], rd.tail[1], rd.tail[2], rd.worst[0], rd.worst[1], rd.worst[2]);
+  const auto tf = build<double>(F, rf);
+  std::fprintf(stderr, "float: tail g %.2g t1 %.2g t2 %.2g; measured g %.3f t1 %.3f t2 %.3f eps\n",
+               rf.tail[0], rf.tail[1], rf.tail[2], rf.worst[0], rf.worst[1], rf.worst[2]);
+  std::printf(
+      "//  Copyright (c) 2026 the spinslide developers.\n"
+      "//  Distributed under the Boost Software License, Version 1.0.\n"
+      "//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)\n"
+      "//\n"
+      "// GENERATED by tools/generate_disk_tables.cpp; do not edit.  Regenerate with\n"
+      "//   ./build/release/tools/generate_disk_tables > include/spinslide/detail/disk_tables.hpp\n"
+      "// The piecewise polynomials of g(y), t1(y), t2(y) used by disk_fast.hpp\n"
+      "// (docs/theory.md §4, \"The fast path\").\n"
+      "// clang-format off\n"
+      "#ifndef SPINSLIDE_DETAIL_DISK_TABLES_HPP\n"
+      "#define SPINSLIDE_DETAIL_DISK_TABLES_HPP\n\n"
+      "namespace spinslide {\nnamespace detail {\n");
+  emit(D, "disk_table_double", td, rd);
+  emit(F, "disk_table_float", tf, rf);
+  std::printf(
+      "\n}  // namespace detail\n}  // namespace spinslide\n\n"
+      "#endif  // SPINSLIDE_DETAIL_DISK_TABLES_HPP\n// clang-format on\n");
+  return 0;
+}
