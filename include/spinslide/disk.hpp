@@ -425,23 +425,12 @@ force_torque_result<typename boost::math::tools::promote_args<T>::type> force_to
 /// force_torque(eps[i]).  Either output pointer may be null to skip it.
 /// Errors as for force_torque(), element by element; with the default policy
 /// the first bad ratio throws and earlier outputs are already written.
-/// For float and double the loop is branch-free and vectorizes when the
-/// target has gathers (e.g. -mavx2 or -march=native); see docs/performance.md.
+/// For float and double it costs what a loop of force_torque() calls costs
+/// (docs/performance.md).
 template <class Real, class Policy>
 void force_torque_batch(const Real* eps, std::size_t count,
                         typename detail::non_deduced<Real>::type* force,
                         typename detail::non_deduced<Real>::type* torque, const Policy& pol) {
-  if constexpr (detail::has_fast_disk<Real>::value) {
-    // One vectorizable pass for the check, then one for the values; a bad
-    // ratio falls through to the element-by-element loop below, which
-    // reports it through the policy at the right element.
-    int invalid = 0;
-    for (std::size_t i = 0; i < count; ++i) invalid |= !(eps[i] >= 0);  // NaN or < 0
-    if (!invalid) {
-      detail::disk_fast_batch(eps, count, force, torque);
-      return;
-    }
-  }
   for (std::size_t i = 0; i < count; ++i) {
     const auto ft = spinslide::force_torque(eps[i], pol);
     if (force) force[i] = ft.force;
