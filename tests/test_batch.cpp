@@ -37,7 +37,11 @@ TEST(Batch, FloatAndErrors) {
   const std::vector<float> e = {0.1f, 1.0f, 10.0f};
   std::vector<float> f(3), t(3);
   spinslide::force_torque_batch(e.data(), e.size(), f.data(), t.data());
-  for (std::size_t i = 0; i < e.size(); ++i) EXPECT_EQ(f[i], spinslide::force(e[i]));
+  // With AVX-512 the float batch uses the vectorized form, which may round
+  // differently from the scalar path (both within 0.52 ulp of the exact value).
+  for (std::size_t i = 0; i < e.size(); ++i)
+    EXPECT_LE(std::fabs(f[i] - spinslide::force(e[i])),
+              std::numeric_limits<float>::epsilon() * spinslide::force(e[i]));
   const std::vector<double> bad = {0.5, -1.0};
   std::vector<double> fb(2), tb(2);
   EXPECT_THROW(spinslide::force_torque_batch(bad.data(), bad.size(), fb.data(), tb.data()),

@@ -425,12 +425,27 @@ force_torque_result<typename boost::math::tools::promote_args<T>::type> force_to
 /// force_torque(eps[i]).  Either output pointer may be null to skip it.
 /// Errors as for force_torque(), element by element; with the default policy
 /// the first bad ratio throws and earlier outputs are already written.
-/// For float and double it costs what a loop of force_torque() calls costs
-/// (docs/performance.md).
+/// For double, and for float without AVX-512, it is a loop of
+/// force_torque() calls; for float with AVX-512 (e.g. -march=native on a
+/// machine that has it) a vectorized form of the same accuracy (≤ 0.52 ulp
+/// measured), about 1.5× faster (docs/performance.md).
 template <class Real, class Policy>
 void force_torque_batch(const Real* eps, std::size_t count,
                         typename detail::non_deduced<Real>::type* force,
                         typename detail::non_deduced<Real>::type* torque, const Policy& pol) {
+#if defined(__AVX512F__)
+  if constexpr (std::is_same<Real, float>::value) {
+    // float on targets with AVX-512: the vectorizable form (one pass for the
+    // check, one for the values); a bad ratio falls through to the loop
+    // below, which reports it through the policy at the right element.
+    int invalid = 0;
+    for (std::size_t i = 0; i < count; ++i) invalid |= !(eps[i] >= 0);  // NaN or < 0
+    if (!invalid) {
+      detail::disk_fast_batch(eps, count, force, torque);
+      return;
+    }
+  }
+#endif
   for (std::size_t i = 0; i < count; ++i) {
     const auto ft = spinslide::force_torque(eps[i], pol);
     if (force) force[i] = ft.force;

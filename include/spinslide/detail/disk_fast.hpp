@@ -9,12 +9,15 @@
 #ifndef SPINSLIDE_DETAIL_DISK_FAST_HPP
 #define SPINSLIDE_DETAIL_DISK_FAST_HPP
 
+#include <spinslide/detail/branch_free_log.hpp>
 #include <spinslide/detail/disk_tables.hpp>
 #include <spinslide/detail/piecewise_chebyshev.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 
 namespace spinslide {
@@ -40,6 +43,24 @@ template <class Real>
 struct has_fast_disk : std::integral_constant<bool, std::is_same<Real, double>::value ||
                                                         std::is_same<Real, float>::value> {};
 
+// The reduction shared by both forms: y = 1 − k² for ε ≥ 0 (or +∞) and
+// k = 1/ε for ε > 1, else 1.
+inline double disk_reduce(double eps, double& k) {
+  // Every operation below is done for every ε and only its result selected,
+  // on operands that cannot trap (no 1/0, no ∞·0), so that the compiler is
+  // free to use selects instead of branches.  One division: k = 1/ε above 1,
+  // else 1.
+  k = 1 / (eps > 1 ? eps : 1.0);
+  // y = (|ε − 1|·k)·((ε + 1)·k) keeps its relative accuracy as ε → 1 from
+  // both sides (ε − 1 is exact there).  ε is capped at 2^64, where y rounds
+  // to 1, to keep ∞ out of the products.
+  const double cap = 18446744073709551616.0;
+  const double e_c = eps < cap ? eps : cap;
+  const double k_c = eps < cap ? k : 1 / cap;
+  const double y = ((eps < 1 ? 1 - e_c : e_c - 1) * k_c) * ((e_c + 1) * k_c);
+  return y;
+}
+
 // 𝓕(ε) and 𝓣(ε) for ε ≥ 0, including +∞; NaN and ε < 0 are the caller's.
 //   ε ≤ 1:  𝓕 = ε·g(y),  𝓣 = t₁(y);     ε > 1:  𝓕 = g(y),  𝓣 = k·t₂(y), k = 1/ε.
 // ε = 0 and ε = ∞ give y = 1, and ε = 1 gives y = 0, where the tables are
@@ -50,18 +71,8 @@ template <class Real>
 inline void disk_fast(Real eps_in, Real& force, Real& torque) {
   using table = disk_table<Real>;
   double eps = static_cast<double>(eps_in) + 0.0;  // −0 → +0
-  // Every operation below is done for every ε and only its result selected,
-  // on operands that cannot trap (no 1/0, no ∞·0), so that the compiler is
-  // free to use selects instead of branches.  One division: k = 1/ε above 1,
-  // else 1.
-  const double k = 1 / (eps > 1 ? eps : 1.0);
-  // y = (|ε − 1|·k)·((ε + 1)·k) keeps its relative accuracy as ε → 1 from
-  // both sides (ε − 1 is exact there).  ε is capped at 2^64, where y rounds
-  // to 1, to keep ∞ out of the products.
-  const double cap = 18446744073709551616.0;
-  const double e_c = eps < cap ? eps : cap;
-  const double k_c = eps < cap ? k : 1 / cap;
-  const double y = ((eps < 1 ? 1 - e_c : e_c - 1) * k_c) * ((e_c + 1) * k_c);
+  double k;
+  const double y = disk_reduce(eps, k);
   std::uint64_t bits;
   std::memcpy(&bits, &y, sizeof y);
   // The exponent and top mantissa bits of y name its piece; y below the
@@ -86,6 +97,63 @@ inline void disk_fast(Real eps_in, Real& force, Real& torque) {
   horner_pair<table::degree>(c, p + 2, p + (eps > 1 ? 4 : 3), 3, x, g, t);
   force = static_cast<Real>((eps > 1 ? 1.0 : eps) * g);
   torque = static_cast<Real>(t * k);
+}
+
+// The same 𝓕(ε) and 𝓣(ε) without a table lookup per ratio, for loops that
+// the compiler vectorizes (force_torque_batch): for each function one form
+// over all y ∈ [0, 1],
+//   f = f(0) + d·y + y(1 − y) P(u) + y² ln(y) Q(u),   u = 2y − 1,
+// exact at both ends, with the y² ln y singularity at ε = 1 carried by the
+// branch-free log (tools/generate_disk_tables.cpp fits P and Q).  Both t₁'s
+// and t₂'s coefficients are read for every ratio and one is selected.
+template <class Real>
+inline void disk_fast_vector(Real eps_in, Real& force, Real& torque) {
+  constexpr int np = disk_global_layout::p_degree, nq = disk_global_layout::q_degree;
+  // Layout of each array: f(0), d, P's coefficients, Q's coefficients.
+  const double* G = disk_global_g;
+  const double* T1 = disk_global_t1;
+  const double* T2 = disk_global_t2;
+  const double eps = static_cast<double>(eps_in) + 0.0;  // −0 → +0
+  double k;
+  const double y = disk_reduce(eps, k);
+  const double u = 2 * y - 1;
+  const double L = y * (y * branch_free_log(y));
+  const bool above = eps > 1;
+  auto t_coefficient = [&](int j) {
+    const double a = T2[j], b = T1[j];
+    return above ? a : b;
+  };
+  double gp = G[2 + np], gq = G[3 + np + nq];
+  double tp = t_coefficient(2 + np), tq = t_coefficient(3 + np + nq);
+  for (int j = np; j-- > 0;) {
+    gp = gp * u + G[2 + j];
+    tp = tp * u + t_coefficient(2 + j);
+  }
+  for (int j = nq; j-- > 0;) {
+    gq = gq * u + G[3 + np + j];
+    tq = tq * u + t_coefficient(3 + np + j);
+  }
+  const double ym = y * (1 - y);
+  const double g = G[0] + (G[1] * y + (ym * gp + L * gq));
+  const double t = t_coefficient(0) + (t_coefficient(1) * y + (ym * tp + L * tq));
+  force = static_cast<Real>((above ? 1.0 : eps) * g);
+  torque = static_cast<Real>(t * k);
+}
+
+// disk_fast_vector over an array (ε[i] ≥ 0 checked by the caller), through
+// blocks of local arrays: the outputs may be null or alias the input, and
+// with that possibility the compiler would not vectorize the loop.
+template <class Real>
+inline void disk_fast_batch(const Real* eps, std::size_t count, Real* force, Real* torque) {
+  constexpr std::size_t block = 256;
+  Real e[block], f[block], t[block];
+  for (std::size_t start = 0; start < count; start += block) {
+    const std::size_t n = count - start < block ? count - start : block;
+    std::copy(eps + start, eps + start + n, e);
+    for (std::size_t i = 0; i < n; ++i) disk_fast_vector(e[i], f[i], t[i]);
+    if (force) std::copy(f, f + n, force + start);
+    if (torque) std::copy(t, t + n, torque + start);
+  }
 }
 
 }  // namespace detail
