@@ -35,7 +35,7 @@ int main() {
   const double inf = std::numeric_limits<double>::infinity();
   std::printf("  F(inf) = %.17g | 1\n", spinslide::force(inf));
   std::printf("  T(inf) = %.17g | 0\n", spinslide::torque(inf));
-  std::printf("  T(1e6) = %.17g | 1/(4eps) + 1/(48eps^3) = 2.5000000000000002083e-07\n",
+  std::printf("  T(1e6) = %.17g | 1/(4eps) + 1/(48eps^3) = 2.5000000000002083e-07\n",
               spinslide::torque(1e6));
 
   std::printf("\nBad input is a domain error: ");

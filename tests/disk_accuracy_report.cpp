@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
   report_literal(rows);
   std::printf(
       "\n(1.8e+308 is epsilon_difference saturating: the literal value has the wrong sign.)\n");
-  std::printf("\nliteral torque at eps = 1e6: %.17g (exact: 2.5000000000000002e-07)\n",
+  std::printf("\nliteral torque at eps = 1e6: %.17g (exact: 2.5000000000002083e-07)\n",
               literal(spinslide_test::quantity::torque, 1e6));
   return 0;
 }

@@ -70,15 +70,16 @@ inline double disk_reduce(double eps, double& k) {
 template <class Real>
 inline void disk_fast(Real eps_in, Real& force, Real& torque) {
   using table = disk_table<Real>;
-  double eps = static_cast<double>(eps_in) + 0.0;  // −0 → +0
+  const double eps = static_cast<double>(eps_in) + 0.0;  // −0 → +0
   double k;
   const double y = disk_reduce(eps, k);
   std::uint64_t bits;
   std::memcpy(&bits, &y, sizeof y);
   // The exponent and top mantissa bits of y name its piece; y below the
   // first binade (near ε = 1) falls into piece 0, y = 1 into the last piece.
-  std::int64_t i = static_cast<std::int64_t>(bits >> (table::mantissa_bits - table::index_bits)) -
-                   table::first_index;
+  std::ptrdiff_t i =
+      static_cast<std::ptrdiff_t>(bits >> (table::mantissa_bits - table::index_bits)) -
+      static_cast<std::ptrdiff_t>(table::first_index);
   i = i < 0 ? 0 : i;
   i = i > table::pieces - 1 ? table::pieces - 1 : i;
 #if defined(__GNUC__)
@@ -91,7 +92,7 @@ inline void disk_fast(Real eps_in, Real& force, Real& torque) {
 #endif
   // Piece i: scale, offset, then coefficient d of g, t₁, t₂ at 2 + 3d, 3 + 3d, 4 + 3d.
   const double* c = table::data();
-  const std::ptrdiff_t p = static_cast<std::ptrdiff_t>(i) * table::stride;
+  const std::ptrdiff_t p = i * table::stride;
   const double x = y * c[p] + c[p + 1];
   double g, t;
   horner_pair<table::degree>(c, p + 2, p + (eps > 1 ? 4 : 3), 3, x, g, t);
