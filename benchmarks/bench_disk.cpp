@@ -36,6 +36,7 @@
 #include <utility>
 #include <vector>
 
+#include "../tools/least_squares.hpp"
 #include "ratio_reporter.hpp"
 
 namespace {
@@ -133,40 +134,6 @@ struct rational {
   }
 };
 
-std::vector<long double> least_squares(std::vector<std::vector<long double>> A,
-                                       std::vector<long double> b) {
-  const std::size_t rows = A.size(), cols = A[0].size();
-  for (std::size_t j = 0; j < cols; ++j) {
-    long double norm = 0;
-    for (std::size_t i = j; i < rows; ++i) norm += A[i][j] * A[i][j];
-    norm = std::sqrt(norm);
-    if (A[j][j] > 0) norm = -norm;
-    std::vector<long double> v(rows, 0);
-    for (std::size_t i = j; i < rows; ++i) v[i] = A[i][j];
-    v[j] -= norm;
-    long double vv = 0;
-    for (std::size_t i = j; i < rows; ++i) vv += v[i] * v[i];
-    if (vv == 0) continue;
-    auto reflect = [&](auto get, auto set) {
-      long double s = 0;
-      for (std::size_t i = j; i < rows; ++i) s += v[i] * get(i);
-      s = 2 * s / vv;
-      for (std::size_t i = j; i < rows; ++i) set(i, get(i) - s * v[i]);
-    };
-    for (std::size_t c = j; c < cols; ++c)
-      reflect([&](std::size_t i) { return A[i][c]; },
-              [&](std::size_t i, long double x) { A[i][c] = x; });
-    reflect([&](std::size_t i) { return b[i]; }, [&](std::size_t i, long double x) { b[i] = x; });
-  }
-  std::vector<long double> x(cols);
-  for (std::size_t j = cols; j-- > 0;) {
-    long double s = b[j];
-    for (std::size_t c = j + 1; c < cols; ++c) s -= A[j][c] * x[c];
-    x[j] = s / A[j][j];
-  }
-  return x;
-}
-
 std::pair<rational, rational> fit_rationals() {
   const int n = 400;
   std::vector<std::vector<long double>> AF, AT;
@@ -199,7 +166,8 @@ std::pair<rational, rational> fit_rationals() {
     for (int k = 1; k <= 8; ++k) r.q[k] = static_cast<double>(x[8 + k]);
     return r;
   };
-  return {make(least_squares(AF, bF)), make(least_squares(AT, bT))};
+  return {make(spinslide_tools::least_squares(AF, bF)),
+          make(spinslide_tools::least_squares(AT, bT))};
 }
 
 const std::pair<rational, rational>& rationals() {

@@ -56,6 +56,8 @@
 #include <string>
 #include <vector>
 
+#include "least_squares.hpp"
+
 namespace {
 
 using mp = boost::multiprecision::cpp_bin_float_50;
@@ -253,39 +255,6 @@ struct global_fit {
   double evaluated = 0;      // largest relative error evaluated in double, / epsilon
 };
 
-std::vector<mp> least_squares(std::vector<std::vector<mp>> A, std::vector<mp> b) {
-  const std::size_t rows = A.size(), cols = A[0].size();
-  for (std::size_t j = 0; j < cols; ++j) {
-    mp norm = 0;
-    for (std::size_t i = j; i < rows; ++i) norm += A[i][j] * A[i][j];
-    norm = sqrt(norm);
-    if (A[j][j] > 0) norm = -norm;
-    std::vector<mp> v(rows, mp(0));
-    for (std::size_t i = j; i < rows; ++i) v[i] = A[i][j];
-    v[j] -= norm;
-    mp vv = 0;
-    for (std::size_t i = j; i < rows; ++i) vv += v[i] * v[i];
-    if (vv == 0) continue;
-    for (std::size_t c = j; c < cols; ++c) {
-      mp d = 0;
-      for (std::size_t i = j; i < rows; ++i) d += v[i] * A[i][c];
-      d = 2 * d / vv;
-      for (std::size_t i = j; i < rows; ++i) A[i][c] -= d * v[i];
-    }
-    mp d = 0;
-    for (std::size_t i = j; i < rows; ++i) d += v[i] * b[i];
-    d = 2 * d / vv;
-    for (std::size_t i = j; i < rows; ++i) b[i] -= d * v[i];
-  }
-  std::vector<mp> x(cols);
-  for (std::size_t j = cols; j-- > 0;) {
-    mp d = b[j];
-    for (std::size_t c = j + 1; c < cols; ++c) d -= A[j][c] * x[c];
-    x[j] = d / A[j][j];
-  }
-  return x;
-}
-
 // As disk_fast_vector evaluates it.
 double evaluate_global(const global_fit& g, double y) {
   const double u = 2 * y - 1;
@@ -331,7 +300,7 @@ std::array<global_fit, 3> fit_global(int p_degree, int q_degree) {
       A.push_back(row);
       b.push_back((fs[j][f] - f0 - (f1 - f0) * y) / fs[j][f]);
     }
-    const auto x = least_squares(A, b);
+    const auto x = spinslide_tools::least_squares(A, b);
     global_fit& g = out[f];
     g.f0 = static_cast<double>(f0);
     g.d = static_cast<double>(f1 - f0);
