@@ -88,45 +88,51 @@ TEST(DiskFast, DoubleWithinFourUlpOnAMillionRatios) { check_dense<double>(4); }
 TEST(DiskFast, FloatWithinTwoUlpOnAMillionRatios) { check_dense<float>(2); }
 
 // The vectorizable form (detail::disk_fast_vector) that force_torque_batch
-// uses for float on AVX-512 targets, called directly so that it is tested on
-// every target.  It evaluates in double; its double results are also checked
-// against a looser bound, as a guard on the form itself: cancellation between
-// its P and y² ln(y) Q terms costs up to about 5.5 double ulp in 𝓣, which is
-// why double does not use it (docs/performance.md).
-TEST(DiskFast, VectorFormFloatWithinTwoUlpOnAMillionRatios) {
-  worst f, t, fd, td;
+// uses on AVX-512 targets, called directly so that it is tested on every
+// target, with the same budgets.
+template <class Real>
+void check_vector_form_dense(double budget) {
+  worst f, t;
   std::size_t n = 0;
-  for (const float x : dense_ratios<float>()) {
-    float rf, rt;
+  for (const Real x : dense_ratios<Real>()) {
+    Real rf, rt;
     spinslide::detail::disk_fast_vector(x, rf, rt);
-    double df, dt;
-    spinslide::detail::disk_fast_vector(static_cast<double>(x), df, dt);
     const auto exact = spinslide::force_torque(static_cast<long double>(x));
-    f.add(ulps(rf, exact.force), x);
-    t.add(ulps(rt, exact.torque), x);
-    fd.add(ulps(df, exact.force), x);
-    td.add(ulps(dt, exact.torque), x);
+    f.add(ulps(rf, exact.force), static_cast<double>(x));
+    t.add(ulps(rt, exact.torque), static_cast<double>(x));
     ++n;
   }
   EXPECT_GE(n, 1000000u);
-  EXPECT_LE(f.error, 2) << "force: worst at eps = " << f.at;
-  EXPECT_LE(t.error, 2) << "torque: worst at eps = " << t.at;
-  EXPECT_LE(fd.error, 8) << "force in double: worst at eps = " << fd.at;
-  EXPECT_LE(td.error, 8) << "torque in double: worst at eps = " << td.at;
+  EXPECT_LE(f.error, budget) << "force: worst at eps = " << f.at;
+  EXPECT_LE(t.error, budget) << "torque: worst at eps = " << t.at;
   std::printf(
-      "vector form, %zu float ratios: force %.3Lf ulp, torque %.3Lf ulp; in double: "
-      "force %.3Lf ulp, torque %.3Lf ulp\n",
-      n, f.error, t.error, fd.error, td.error);
+      "vector form, %zu ratios: force %.3Lf ulp (eps = %.17g), torque %.3Lf ulp (eps = %.17g)\n", n,
+      f.error, f.at, t.error, t.at);
 }
 
-TEST(DiskFast, VectorFormExactValues) {
-  for (const float x : {0.0f, 1.0f, std::numeric_limits<float>::infinity()}) {
-    float f, t;
-    spinslide::detail::disk_fast_vector(x, f, t);
-    EXPECT_EQ(f, spinslide::force(x)) << x;
-    EXPECT_EQ(t, spinslide::torque(x)) << x;
+TEST(DiskFast, VectorFormDoubleWithinFourUlpOnAMillionRatios) {
+  check_vector_form_dense<double>(4);
+}
+TEST(DiskFast, VectorFormFloatWithinTwoUlpOnAMillionRatios) { check_vector_form_dense<float>(2); }
+
+// y = 0 (ε = 1) and y = 1 (ε = 0, ∞) give the anchors themselves.
+template <class Real>
+void check_vector_form_exact() {
+  const long double pi = boost::math::constants::pi<long double>();
+  const Real inf = std::numeric_limits<Real>::infinity();
+  const Real cases[][3] = {
+      {Real(0), Real(0), static_cast<Real>(2.0L / 3)},
+      {Real(1), static_cast<Real>(8 / (3 * pi)), static_cast<Real>(8 / (9 * pi))},
+      {inf, Real(1), Real(0)}};
+  for (const auto& c : cases) {
+    Real f, t;
+    spinslide::detail::disk_fast_vector(c[0], f, t);
+    EXPECT_EQ(f, c[1]) << c[0];
+    EXPECT_EQ(t, c[2]) << c[0];
   }
 }
+TEST(DiskFast, VectorFormExactValuesDouble) { check_vector_form_exact<double>(); }
+TEST(DiskFast, VectorFormExactValuesFloat) { check_vector_form_exact<float>(); }
 
 // Every float in [2^-24, 2^24] with its low 4 mantissa bits zero (about 6e7
 // ratios), against the double fast path: its error is 2^-29 of a float ulp.

@@ -238,82 +238,93 @@ void emit(const layout& L, const char* table, const std::vector<piece<Real>>& t,
   std::printf("};\n");
 }
 
-// The vectorizable form of the batch: one pair of polynomials over all of
-// y ∈ [0, 1] for each function,
-//   f(y) ≈ f(0) + (f(1) − f(0)) y + y(1 − y) P(u) + y² ln(y) Q(u),   u = 2y − 1,
+// The vectorizable form of the batch: for each function two pieces, y < ½
+// (piece 0) and y ≥ ½ (piece 1), each
+//   f(y) ≈ A + s P(v) + y² ln(y) Q(v),
+// piece 0: A = f(0), s = y,     v = 4y − 1;
+// piece 1: A = f(1), s = y − 1, v = 4y − 3 (y − 1 and v exact there),
 // which carries the y² ln y singularity at y = 0 (ε = 1) explicitly, so that
-// no pieces (and no per-ratio table lookups) are needed, and is exact at both
-// ends, where P's and Q's terms vanish (without the anchors, the rounding of
-// P near y = 1, where its terms cancel, cost up to 7 ulp in 𝓣).  P and Q are
-// fitted by least squares of the relative error at Chebyshev points of y
-// (Householder QR in cpp_bin_float_50); the fit converges geometrically in
-// the degrees.
-struct global_fit {
-  double f0 = 0, d = 0;  // f(0) and f(1) − f(0)
+// two pieces (selected per ratio, not looked up) are enough, and is exact at
+// y = 0 and y = 1, where s and y² ln y vanish.  P and Q are fitted by least
+// squares of the relative error at 300 Chebyshev points of each piece
+// (Householder QR in cpp_bin_float_50).  One piece over all of [0, 1] was
+// tried first: P and y² ln(y) Q then cancel inside (0, 1) and the torque
+// reached 4.9 ulp in double.
+struct global_piece {
+  double anchor = 0;
   std::vector<double> p, q;
+};
+struct global_fit {
+  global_piece piece[2];
   double approximation = 0;  // largest relative error of the fit itself, / epsilon
   double evaluated = 0;      // largest relative error evaluated in double, / epsilon
 };
 
 // As disk_fast_vector evaluates it.
 double evaluate_global(const global_fit& g, double y) {
-  const double u = 2 * y - 1;
-  double P = g.p.back(), Q = g.q.back();
-  for (std::size_t k = g.p.size() - 1; k-- > 0;) P = P * u + g.p[k];
-  for (std::size_t k = g.q.size() - 1; k-- > 0;) Q = Q * u + g.q[k];
+  const bool high = y >= 0.5;
+  const global_piece& c = g.piece[high];
+  const double v = high ? 4 * y - 3 : 4 * y - 1, s = high ? y - 1 : y;
+  double P = c.p.back(), Q = c.q.back();
+  for (std::size_t k = c.p.size() - 1; k-- > 0;) P = P * v + c.p[k];
+  for (std::size_t k = c.q.size() - 1; k-- > 0;) Q = Q * v + c.q[k];
   const double L = y * (y * spinslide::detail::branch_free_log(y));
-  return g.f0 + (g.d * y + (y * (1 - y) * P + L * Q));
+  return c.anchor + (s * P + L * Q);
 }
 
 std::array<global_fit, 3> fit_global(int p_degree, int q_degree) {
   using boost::math::constants::pi;
-  const int n = 400;
-  std::vector<mp> ys;
-  std::vector<std::array<mp, 3>> fs;
-  for (int j = 0; j < n; ++j) {
-    ys.push_back((1 - cos(pi<mp>() * (j + mp(0.5)) / n)) / 2);
-    fs.push_back(functions(ys.back()));
-  }
-  // Check points: uniform in y, and log-uniform down to 1e-40.
+  const int n = 300;
+  // Check points: uniform in y, log-uniform down to 1e-40 and up to 1 − 1e-16.
   std::vector<double> check;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> uniform(0, 1), exponent(-40, 0);
   for (int j = 0; j < 6000; ++j)
     check.push_back(j % 3 == 0   ? uniform(rng)
                     : j % 3 == 1 ? std::pow(10.0, exponent(rng))
-                                 : 1 - std::pow(10.0, exponent(rng) / 2));
+                                 : 1 - std::pow(10.0, exponent(rng) / 2.5));
+  check.push_back(0.5);
   check.push_back(1.0);
   const mp eps = std::numeric_limits<double>::epsilon();
   std::array<global_fit, 3> out;
+  std::array<std::array<std::vector<mp>, 2>, 3> exact_coefficients;
   for (int f = 0; f < 3; ++f) {
-    const mp f0 = functions(mp(0))[f], f1 = functions(mp(1))[f];
-    std::vector<std::vector<mp>> A;
-    std::vector<mp> b;
-    for (int j = 0; j < n; ++j) {
-      const mp& y = ys[j];
-      const mp u = 2 * y - 1, L = y * y * log(y);
-      std::vector<mp> row;
-      mp w = 1;
-      for (int k = 0; k <= p_degree; ++k, w *= u) row.push_back(y * (1 - y) * w / fs[j][f]);
-      w = 1;
-      for (int k = 0; k <= q_degree; ++k, w *= u) row.push_back(L * w / fs[j][f]);
-      A.push_back(row);
-      b.push_back((fs[j][f] - f0 - (f1 - f0) * y) / fs[j][f]);
+    for (int h = 0; h < 2; ++h) {
+      const mp lo = h ? mp(0.5) : mp(0), hi = h ? mp(1) : mp(0.5);
+      const mp anchor = functions(h ? mp(1) : mp(0))[f];
+      std::vector<std::vector<mp>> A;
+      std::vector<mp> b;
+      for (int j = 0; j < n; ++j) {
+        const mp y = lo + (hi - lo) * (1 - cos(pi<mp>() * (j + mp(0.5)) / n)) / 2;
+        const mp v = (2 * y - (lo + hi)) / (hi - lo), s = h ? y - 1 : y, L = y * y * log(y);
+        const mp fy = functions(y)[f];
+        std::vector<mp> row;
+        mp w = 1;
+        for (int k = 0; k <= p_degree; ++k, w *= v) row.push_back(s * w / fy);
+        w = 1;
+        for (int k = 0; k <= q_degree; ++k, w *= v) row.push_back(L * w / fy);
+        A.push_back(row);
+        b.push_back((fy - anchor) / fy);
+      }
+      exact_coefficients[f][h] = spinslide_tools::least_squares(A, b);
+      global_piece& c = out[f].piece[h];
+      c.anchor = static_cast<double>(anchor);
+      for (int k = 0; k <= p_degree; ++k)
+        c.p.push_back(static_cast<double>(exact_coefficients[f][h][k]));
+      for (int k = 0; k <= q_degree; ++k)
+        c.q.push_back(static_cast<double>(exact_coefficients[f][h][p_degree + 1 + k]));
     }
-    const auto x = spinslide_tools::least_squares(A, b);
     global_fit& g = out[f];
-    g.f0 = static_cast<double>(f0);
-    g.d = static_cast<double>(f1 - f0);
-    for (int k = 0; k <= p_degree; ++k) g.p.push_back(static_cast<double>(x[k]));
-    for (int k = 0; k <= q_degree; ++k) g.q.push_back(static_cast<double>(x[p_degree + 1 + k]));
     for (const double y : check) {
       const mp exact = functions(mp(y))[f];
-      const mp u = 2 * mp(y) - 1;
+      const int h = y >= 0.5;
+      const auto& x = exact_coefficients[f][h];
+      const mp ym = y, v = h ? 4 * ym - 3 : 4 * ym - 1;
       mp P = 0, Q = 0;
-      for (int k = p_degree; k >= 0; --k) P = P * u + x[k];
-      for (int k = q_degree; k >= 0; --k) Q = Q * u + x[p_degree + 1 + k];
-      const mp lin = f0 + (f1 - f0) * mp(y) + mp(y) * (1 - mp(y)) * P;
-      const mp fit = y == 0 ? lin : lin + mp(y) * mp(y) * log(mp(y)) * Q;
+      for (int k = p_degree; k >= 0; --k) P = P * v + x[k];
+      for (int k = q_degree; k >= 0; --k) Q = Q * v + x[p_degree + 1 + k];
+      const mp fit = functions(h ? mp(1) : mp(0))[f] + (h ? ym - 1 : ym) * P +
+                     (y == 0 ? mp(0) : ym * ym * log(ym) * Q);
       g.approximation =
           std::max(g.approximation, static_cast<double>(abs(fit - exact) / exact / eps));
       g.evaluated = std::max(
@@ -324,11 +335,14 @@ std::array<global_fit, 3> fit_global(int p_degree, int q_degree) {
 }
 
 void emit_global(const std::array<global_fit, 3>& fits) {
+  const std::size_t np = fits[0].piece[0].p.size() - 1, nq = fits[0].piece[0].q.size() - 1;
   std::printf(
-      "\n// The batch's vectorizable form, for f = g, t1, t2:\n"
-      "//   f(y) = f(0) + d y + y(1 − y) P(u) + y² ln(y) Q(u),  u = 2y − 1, d = f(1) − f(0):\n"
-      "// f(0), d, the coefficients of P (degree %zu), then those of Q (degree %zu).\n",
-      fits[0].p.size() - 1, fits[0].q.size() - 1);
+      "\n// The batch's vectorizable form, for f = g, t1, t2, in two pieces h = 0\n"
+      "// (y < 1/2) and h = 1 (y >= 1/2):\n"
+      "//   f(y) = A + s P(v) + y^2 ln(y) Q(v),  h = 0: A = f(0), s = y, v = 4y - 1;\n"
+      "//                                       h = 1: A = f(1), s = y - 1, v = 4y - 3.\n"
+      "// Row h: A, the coefficients of P (degree %zu), then those of Q (degree %zu).\n",
+      np, nq);
   std::printf(
       "// Largest error of the fit (relative, in units of epsilon): g %.2g, t1 %.2g,\n"
       "// t2 %.2g; evaluated in double by the generator: g %.3f, t1 %.3f, t2 %.3f.\n",
@@ -336,19 +350,25 @@ void emit_global(const std::array<global_fit, 3>& fits) {
       fits[1].evaluated, fits[2].evaluated);
   std::printf(
       "struct disk_global_layout {\n  static constexpr int p_degree = %zu;\n"
-      "  static constexpr int q_degree = %zu;\n};\n",
-      fits[0].p.size() - 1, fits[0].q.size() - 1);
+      "  static constexpr int q_degree = %zu;\n  static constexpr int row = %zu;\n};\n",
+      np, nq, np + nq + 3);
   const char* names[3] = {"g", "t1", "t2"};
   for (int f = 0; f < 3; ++f) {
-    std::printf("alignas(64) inline constexpr double disk_global_%s[] = {\n   ", names[f]);
-    std::vector<double> row = {fits[f].f0, fits[f].d};
-    row.insert(row.end(), fits[f].p.begin(), fits[f].p.end());
-    row.insert(row.end(), fits[f].q.begin(), fits[f].q.end());
-    for (std::size_t k = 0; k < row.size(); ++k) {
-      std::printf(" %a,", row[k]);
-      if (k % 4 == 3 && k + 1 < row.size()) std::printf("\n   ");
+    std::printf("alignas(64) inline constexpr double disk_global_%s[2][%zu] = {\n", names[f],
+                np + nq + 3);
+    for (int h = 0; h < 2; ++h) {
+      const global_piece& c = fits[f].piece[h];
+      std::vector<double> row = {c.anchor};
+      row.insert(row.end(), c.p.begin(), c.p.end());
+      row.insert(row.end(), c.q.begin(), c.q.end());
+      std::printf("    {");
+      for (std::size_t k = 0; k < row.size(); ++k) {
+        std::printf("%s%a,", k ? " " : "", row[k]);
+        if (k % 4 == 3 && k + 1 < row.size()) std::printf("\n     ");
+      }
+      std::printf("},\n");
     }
-    std::printf("\n};\n");
+    std::printf("};\n");
   }
 }
 }  // namespace
@@ -383,7 +403,7 @@ int main(int argc, char** argv) {
   const auto tf = build<double>(F, rf);
   std::fprintf(stderr, "float: tail g %.2g t1 %.2g t2 %.2g; measured g %.3f t1 %.3f t2 %.3f eps\n",
                rf.tail[0], rf.tail[1], rf.tail[2], rf.worst[0], rf.worst[1], rf.worst[2]);
-  const auto global = fit_global(11, 9);
+  const auto global = fit_global(10, 8);
   std::fprintf(stderr, "global: fit g %.2g t1 %.2g t2 %.2g; evaluated g %.3f t1 %.3f t2 %.3f eps\n",
                global[0].approximation, global[1].approximation, global[2].approximation,
                global[0].evaluated, global[1].evaluated, global[2].evaluated);

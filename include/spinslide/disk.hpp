@@ -425,19 +425,19 @@ force_torque_result<typename boost::math::tools::promote_args<T>::type> force_to
 /// force_torque(eps[i]).  Either output pointer may be null to skip it.
 /// Errors as for force_torque(), element by element; with the default policy
 /// the first bad ratio throws and earlier outputs are already written.
-/// For double, and for float without AVX-512, it is a loop of
-/// force_torque() calls; for float with AVX-512 (e.g. -march=native on a
-/// machine that has it) a vectorized form of the same accuracy (≤ 0.52 ulp
-/// measured), about 1.5× faster (docs/performance.md).
+/// For float and double on targets with AVX-512 (e.g. -march=native on a
+/// machine that has it) a vectorized form of the same accuracy (≤ 4 ulp,
+/// about 2× faster than the scalar path); elsewhere a loop of force_torque()
+/// calls (docs/performance.md).
 template <class Real, class Policy>
 void force_torque_batch(const Real* eps, std::size_t count,
                         typename detail::non_deduced<Real>::type* force,
                         typename detail::non_deduced<Real>::type* torque, const Policy& pol) {
 #if defined(__AVX512F__)
-  if constexpr (std::is_same<Real, float>::value) {
-    // float on targets with AVX-512: the vectorizable form (one pass for the
-    // check, one for the values); a bad ratio falls through to the loop
-    // below, which reports it through the policy at the right element.
+  if constexpr (detail::has_fast_disk<Real>::value) {
+    // Targets with AVX-512: the vectorizable form (one pass for the check,
+    // one for the values); a bad ratio falls through to the loop below,
+    // which reports it through the policy at the right element.
     int invalid = 0;
     for (std::size_t i = 0; i < count; ++i) invalid |= !(eps[i] >= 0);  // NaN or < 0
     if (!invalid) {

@@ -101,42 +101,47 @@ inline void disk_fast(Real eps_in, Real& force, Real& torque) {
 }
 
 // The same 𝓕(ε) and 𝓣(ε) without a table lookup per ratio, for loops that
-// the compiler vectorizes (force_torque_batch): for each function one form
-// over all y ∈ [0, 1],
-//   f = f(0) + d·y + y(1 − y) P(u) + y² ln(y) Q(u),   u = 2y − 1,
-// exact at both ends, with the y² ln y singularity at ε = 1 carried by the
-// branch-free log (tools/generate_disk_tables.cpp fits P and Q).  Both t₁'s
-// and t₂'s coefficients are read for every ratio and one is selected.
+// the compiler vectorizes (force_torque_batch): for each function two pieces
+// of y ∈ [0, 1], each
+//   f = A + s·P(v) + y² ln(y)·Q(v),
+//   y < ½: A = f(0), s = y, v = 4y − 1;   y ≥ ½: A = f(1), s = y − 1, v = 4y − 3,
+// with the y² ln y singularity at ε = 1 carried by the branch-free log
+// (tools/generate_disk_tables.cpp fits P and Q; docs/theory.md (F2)).  Exact
+// at y = 0 and y = 1 (ε = 0, 1, ∞), where s and y² ln y vanish.  Every
+// candidate coefficient (two pieces, and t₁ or t₂) is read for every ratio
+// and one is selected: a conditional read would be a branch on targets
+// without masked loads.
 template <class Real>
 inline void disk_fast_vector(Real eps_in, Real& force, Real& torque) {
-  constexpr int np = disk_global_layout::p_degree, nq = disk_global_layout::q_degree;
-  // Layout of each array: f(0), d, P's coefficients, Q's coefficients.
-  const double* G = disk_global_g;
-  const double* T1 = disk_global_t1;
-  const double* T2 = disk_global_t2;
+  using layout = disk_global_layout;
   const double eps = static_cast<double>(eps_in) + 0.0;  // −0 → +0
   double k;
   const double y = disk_reduce(eps, k);
-  const double u = 2 * y - 1;
+  const bool above = eps > 1, high = y >= 0.5;
+  const double v = high ? 4 * y - 3 : 4 * y - 1, s = high ? y - 1 : y;
   const double L = y * (y * branch_free_log(y));
-  const bool above = eps > 1;
-  auto t_coefficient = [&](int j) {
-    const double a = T2[j], b = T1[j];
-    return above ? a : b;
+  auto g_coefficient = [&](int j) {
+    const double a = disk_global_g[1][j], b = disk_global_g[0][j];
+    return high ? a : b;
   };
-  double gp = G[2 + np], gq = G[3 + np + nq];
-  double tp = t_coefficient(2 + np), tq = t_coefficient(3 + np + nq);
+  auto t_coefficient = [&](int j) {
+    const double a1 = disk_global_t2[1][j], b1 = disk_global_t1[1][j];
+    const double a0 = disk_global_t2[0][j], b0 = disk_global_t1[0][j];
+    return high ? (above ? a1 : b1) : (above ? a0 : b0);
+  };
+  constexpr int np = layout::p_degree, nq = layout::q_degree;
+  double gp = g_coefficient(1 + np), gq = g_coefficient(2 + np + nq);
+  double tp = t_coefficient(1 + np), tq = t_coefficient(2 + np + nq);
   for (int j = np; j-- > 0;) {
-    gp = gp * u + G[2 + j];
-    tp = tp * u + t_coefficient(2 + j);
+    gp = gp * v + g_coefficient(1 + j);
+    tp = tp * v + t_coefficient(1 + j);
   }
   for (int j = nq; j-- > 0;) {
-    gq = gq * u + G[3 + np + j];
-    tq = tq * u + t_coefficient(3 + np + j);
+    gq = gq * v + g_coefficient(2 + np + j);
+    tq = tq * v + t_coefficient(2 + np + j);
   }
-  const double ym = y * (1 - y);
-  const double g = G[0] + (G[1] * y + (ym * gp + L * gq));
-  const double t = t_coefficient(0) + (t_coefficient(1) * y + (ym * tp + L * tq));
+  const double g = g_coefficient(0) + (s * gp + L * gq);
+  const double t = t_coefficient(0) + (s * tp + L * tq);
   force = static_cast<Real>((above ? 1.0 : eps) * g);
   torque = static_cast<Real>(t * k);
 }
