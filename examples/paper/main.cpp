@@ -17,7 +17,8 @@
 //                              asymptotes eps/4 and -eps
 // and prints every number the paper states beside the computed value.  The
 // PNG files need gnuplot (Debian: gnuplot-nox); without it only the CSV files
-// are written.  Fig. 5 (the CD experiment) is examples/cd_experiment's.
+// are written.  Fig. 5 (the CD experiment) is not here yet: it needs the
+// simulated experiment of issue 7, item 2.
 #include <spinslide/spinslide.hpp>
 
 #include <boost/math/constants/constants.hpp>
@@ -217,9 +218,6 @@ void numbers() {
   row("printed T(3) (eps >= 1 branch)", "(formula)", printed_torque(3.0),
       "area integral: 0.084130 (printed form lacks eps^2)");
   row("T(3)", "", spinslide::torque(3.0), "0.084130");
-  std::printf(
-      "\nThe paper's mu(n) = 0.202 + 0.00053 n and the CD's R = 6 cm are inputs of "
-      "examples/cd_experiment.\n");
 }
 
 }  // namespace
