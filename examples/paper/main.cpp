@@ -17,8 +17,10 @@
 //                              asymptotes eps/4 and -eps
 // and prints every number the paper states beside the computed value.  The
 // PNG files need gnuplot (Debian: gnuplot-nox); without it only the CSV files
-// are written.  Fig. 5 (the CD experiment) is not here yet: it needs the
-// simulated experiment of issue 7, item 2.
+// are written.
+//   fig5_experiment.png        Fig. 5: the simulated CD experiment's measured
+//                              F and T over the theory curves
+//                              (examples/cd_experiment, docs/experiment.md)
 #include <spinslide/spinslide.hpp>
 
 #include <boost/math/constants/constants.hpp>
@@ -27,9 +29,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "../cd_experiment/cd_experiment.hpp"
 #include "../gnuplot.hpp"
 
 namespace {
@@ -167,15 +171,23 @@ void figure4(const output& out) {
     std::fprintf(f, "%.6g,%.17g\n", e, spinslide::ratio_flow(spinslide::uniform_disk<>(), e, 0.5));
   }
   std::fclose(f);
-  std::string script = png_header;
-  script +=
-      "set output 'fig4_flow.png'\nset size 0.6,1\nset grid\nset key left bottom\n"
-      "set title 'Fig. 4: f({/Symbol e}) = {/Symbol e} - F/(2T), zero at {/Symbol e}_0 = "
-      "0.653'\nset xlabel '{/Symbol e}'\nset ylabel 'f'\nset yrange [-1.5:0.3]\n"
+  const std::string script =
+      "set terminal pngcairo size 800,500 font ',11'\nset datafile separator ','\n"
+      "set output 'fig4_flow.png'\nset grid\nset key left bottom\n"
+      "set title 'Fig. 4: f({/Symbol e}) = {/Symbol e} - F/(2T), zero at {/Symbol e}_0 = 0.653'\n"
+      "set xlabel '{/Symbol e}'\nset ylabel 'f'\nset xrange [0:3]\nset yrange [-3.2:0.4]\n"
       "plot 'fig4_flow.csv' using 1:2 with lines lw 2 title 'f({/Symbol e})', "
-      "x/4 dt 2 title '{/Symbol e}/4', -x dt 3 title '-{/Symbol e}', 0 lc rgb 'black' "
-      "notitle\n";
+      "x/4 dt 2 title '{/Symbol e}/4', -x dt 3 title '-{/Symbol e}', 0 lc rgb 'black' notitle\n";
   out.figure("fig4_flow", "Fig. 4, f(eps) and its asymptotes", script);
+}
+
+// Fig. 5: the CD experiment, simulated and analysed (docs/experiment.md).
+void figure5(const output& out) {
+  std::printf("fig5_experiment:       Fig. 5, the CD experiment (60 simulated throws):\n");
+  const auto frames = cd_experiment::simulate(60, 2003);
+  cd_experiment::write_frames(out.dir + "/cd_frames.csv", frames);
+  cd_experiment::analyse(cd_experiment::read_frames(out.dir + "/cd_frames.csv"), out.dir, true);
+  std::fflush(stdout);
 }
 
 // The paper's printed torque for eps >= 1, which lacks a factor eps^2
@@ -224,12 +236,19 @@ void numbers() {
 
 int main(int argc, char** argv) {
   const output out{argc > 1 ? argv[1] : "."};
+  std::error_code error;
+  std::filesystem::create_directories(out.dir, error);
+  if (error) {
+    std::fprintf(stderr, "paper: cannot create %s: %s\n", out.dir.c_str(), error.message().c_str());
+    return 1;
+  }
   std::printf("Farkas, Bartels, Unger & Wolf (2003), computed by spinslide; output in %s\n\n",
               out.dir.c_str());
   figure1(out);
   figure2(out);
   figure3(out);
   figure4(out);
+  figure5(out);
   numbers();
   return 0;
 }
