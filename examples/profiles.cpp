@@ -49,7 +49,7 @@ int main() {
   std::printf(
       "Profiles: moments, F / T at eps = 0.1, 0.653, 1, 3, and the limit curve T at F = 0.5\n\n");
   std::printf(
-      "| profile | <r> | <1/r> | <r^2> | eps = 0.1 | eps = 0.653 | eps = 1 | eps = 3 | T(F = 0.5) "
+      "| profile | ⟨r⟩ | ⟨1/r⟩ | ⟨r²⟩ | eps = 0.1 | eps = 0.653 | eps = 1 | eps = 3 | T(F = 0.5) "
       "|\n");
   std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
   row("uniform_disk", uniform_disk<>());

@@ -36,9 +36,14 @@ class uncoupled_caps : public detail::profile_base<uncoupled_caps<Real, Policy>,
       : cap_(detail::checked_parameter<Real>(
             torque_cap, std::numeric_limits<Real>::min(), std::numeric_limits<Real>::max(), false,
             "spinslide::uncoupled_caps<%1%>", "Got torque_cap = %1%, but it must be > 0.")) {}
+  /// ⟨r⟩ = the cap.
   Real mean_radius() const { return cap_; }
+  /// ∞: the force jumps to 1 at any ε > 0.
   Real mean_inverse_radius() const { return std::numeric_limits<Real>::infinity(); }
+  /// ∞: the torque stays at the cap for every finite ε.
   Real mean_square_radius() const { return std::numeric_limits<Real>::infinity(); }
+  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that force_torque() calls after its domain
+  /// check and the limits ε = 0 and ε = ∞; call force_torque() instead.
   force_torque_result<Real> general(Real) const { return {Real(1), cap_}; }
 
  private:
@@ -56,14 +61,20 @@ template <class Real = double, class Policy = boost::math::policies::policy<>>
 class elliptic_limit_surface
     : public detail::profile_base<elliptic_limit_surface<Real, Policy>, Real, Policy> {
  public:
+  /// `torque_axis` = τ > 0 (finite); otherwise a domain error.
   explicit elliptic_limit_surface(Real torque_axis = Real(2) / 3)
       : tau_(detail::checked_parameter<Real>(torque_axis, std::numeric_limits<Real>::min(),
                                              std::numeric_limits<Real>::max(), false,
                                              "spinslide::elliptic_limit_surface<%1%>",
                                              "Got torque_axis = %1%, but it must be > 0.")) {}
+  /// τ = 𝓣(0).
   Real mean_radius() const { return tau_; }
-  Real mean_inverse_radius() const { return 2 / tau_; }        // 𝓕′(0) = 1/τ
+  /// 2/τ, so that 𝓕′(0) = 1/τ = ⟨1/r⟩/2.
+  Real mean_inverse_radius() const { return 2 / tau_; }  // 𝓕′(0) = 1/τ
+  /// 2τ², so that ε𝓣 → τ² = ⟨r²⟩/2.
   Real mean_square_radius() const { return 2 * tau_ * tau_; }  // ε𝓣 → τ²
+  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that force_torque() calls after its domain
+  /// check and the limits ε = 0 and ε = ∞; call force_torque() instead.
   force_torque_result<Real> general(Real eps) const {
     BOOST_MATH_STD_USING
     const Real h = hypot(eps, tau_);
@@ -82,6 +93,8 @@ template <class Real = double, class Policy = boost::math::policies::policy<>>
 class pade_approximation
     : public detail::profile_base<pade_approximation<Real, Policy>, Real, Policy> {
  public:
+  /// The approximants for the moments ⟨r⟩, ⟨1/r⟩, ⟨r²⟩ (each finite and > 0,
+  /// otherwise a domain error); the defaults are the uniform disk's.
   pade_approximation(Real mean_radius = Real(2) / 3, Real mean_inverse_radius = 2,
                      Real mean_square_radius = Real(1) / 2)
       : r_(positive(mean_radius)),
@@ -92,9 +105,14 @@ class pade_approximation
   static pade_approximation matching(const Profile& p) {
     return pade_approximation(p.mean_radius(), p.mean_inverse_radius(), p.mean_square_radius());
   }
+  /// ⟨r⟩ as given.
   Real mean_radius() const { return r_; }
+  /// ⟨1/r⟩ as given.
   Real mean_inverse_radius() const { return inv_; }
+  /// ⟨r²⟩ as given.
   Real mean_square_radius() const { return sq_; }
+  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that force_torque() calls after its domain
+  /// check and the limits ε = 0 and ε = ∞; call force_torque() instead.
   force_torque_result<Real> general(Real eps) const {
     return {eps / (eps + 2 / inv_), r_ * sq_ / (sq_ + 2 * r_ * eps)};
   }

@@ -62,7 +62,9 @@ void set(V& v, Real value) {
 /// torque about the normal (signed, positive counter-clockwise).
 template <class Vec2, class Real>
 struct planar_friction {
+  /// The force vector, against the sliding velocity (units of the normal force).
   Vec2 force;
+  /// The torque about the normal, against the spin.
   Real torque;
 };
 
@@ -70,7 +72,9 @@ struct planar_friction {
 /// torque vector (along the normal).
 template <class Vec3>
 struct spatial_friction {
+  /// The force vector, in the tangent plane, against the sliding velocity.
   Vec3 force;
+  /// The torque vector, along the normal, against the spin.
   Vec3 torque;
 };
 
@@ -85,8 +89,11 @@ struct spatial_friction {
 template <class Profile = uniform_disk<double>>
 class contact_law {
  public:
+  /// The profile's floating-point type.
   using Real = typename Profile::value_type;
 
+  /// The law for `profile`, regularized below `velocity_scale` = v_s ≥ 0 (0:
+  /// no regularization); v_s < 0 or NaN is a domain error.
   explicit contact_law(Profile profile = Profile(), Real velocity_scale = Real(1e-6))
       : profile_(std::move(profile)),
         vs_(detail::checked_parameter<Real>(velocity_scale, Real(0),
@@ -94,7 +101,9 @@ class contact_law {
                                             "spinslide::contact_law<%1%>::contact_law",
                                             "Got velocity_scale = %1%, but it must be >= 0.")) {}
 
+  /// The profile.
   const Profile& profile() const { return profile_; }
+  /// v_s.
   Real velocity_scale() const { return vs_; }
 
   /// Planar contact.  `velocity`: the relative sliding velocity (x, y);

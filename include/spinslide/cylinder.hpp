@@ -26,7 +26,9 @@ namespace spinslide {
 /// 𝓣 = B − A is an identity the tests check.
 template <class Real>
 struct tilt_integrals {
-  Real A, B, C;
+  Real A;  ///< (1/π) ∬ y (ε − y)/ρ
+  Real B;  ///< (1/π) ∬ x²/ρ
+  Real C;  ///< (1/π) ∬ y (x² + y² − εy)/ρ
 };
 
 /// A, B, C by 2-D quadrature: the chord integral over x in closed form
@@ -76,7 +78,11 @@ tilt_integrals<Real> tilted_pressure_integrals(Real eps) {
 /// of the motion for s = +1).
 template <class Real>
 struct cylinder_friction {
-  Real along, sideways, torque, tilt_forward, tilt_sideways;
+  Real along;          ///< force along the velocity, per μN (≤ 0)
+  Real sideways;       ///< force along v × ω, per μN
+  Real torque;         ///< torque about the normal, per μNR, opposing the spin
+  Real tilt_forward;   ///< α in p ∝ 1 + αx/R + βy'/R
+  Real tilt_sideways;  ///< β in p ∝ 1 + αx/R + βy'/R
 };
 
 /// The self-consistent tilt (theory §10): with κ = 4μh/R,

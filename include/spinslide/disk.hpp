@@ -36,8 +36,8 @@ namespace spinslide {
 /// `force` is in units of μF_n, `torque` in units of μF_n R.
 template <class Real>
 struct force_torque_result {
-  Real force;
-  Real torque;
+  Real force;   ///< 𝓕(ε), in units of μF_n
+  Real torque;  ///< 𝓣(ε), in units of μF_n R
 };
 
 namespace detail {

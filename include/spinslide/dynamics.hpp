@@ -77,8 +77,11 @@ throw_input<Real> checked_throw(const char* function, Real gamma, Real v0, Real 
 template <class Profile>
 class dimensionless_motion {
  public:
+  /// The profile's floating-point type.
   using Real = typename Profile::value_type;
 
+  /// The system for `profile` and γ = `inertia_ratio` (finite and > 0,
+  /// otherwise a domain error).
   dimensionless_motion(Profile profile, Real inertia_ratio)
       : profile_(std::move(profile)),
         gamma_(
@@ -86,6 +89,9 @@ class dimensionless_motion {
                                      "Got inertia_ratio = %1%, but gamma must be finite and > 0.",
                                      typename Profile::policy_type())) {}
 
+  /// odeint's system call: x = {v*, ω*, s*, θ*} → dx/dt* =
+  /// {−𝓕(ε), −𝓣(ε)/γ, v*, ω*}, ε = v*/ω*; a speed that overshot below 0
+  /// counts as 0 (then no friction on it).  Never throws for finite x.
   template <class State, class Time>
   void operator()(const State& x, State& dxdt, Time) const {
     const Real v = x[0] > 0 ? Real(x[0]) : Real(0);
@@ -106,7 +112,9 @@ class dimensionless_motion {
     dxdt[3] = w;
   }
 
+  /// The profile.
   const Profile& profile() const { return profile_; }
+  /// γ.
   Real inertia_ratio() const { return gamma_; }
 
  private:
@@ -119,6 +127,7 @@ class dimensionless_motion {
 template <class Profile>
 class si_motion {
  public:
+  /// The profile's floating-point type.
   using Real = typename Profile::value_type;
 
   /// radius R [m], friction coefficient μ, gravity g [m/s²], γ = I/(mR²).
@@ -130,6 +139,8 @@ class si_motion {
                   "Got friction_coefficient = %1%, but it must be finite and > 0.")),
         g_(check(gravity, "Got gravity = %1%, but it must be finite and > 0.")) {}
 
+  /// odeint's system call: x = {v, ω, s, θ} (SI) → dx/dt =
+  /// {−μg𝓕(ε), −μg𝓣(ε)/(γR), v, ω}, ε = v/(Rω).  Never throws for finite x.
   template <class State, class Time>
   void operator()(const State& x, State& dxdt, Time t) const {
     State xs = x;
@@ -145,10 +156,15 @@ class si_motion {
 
   /// v = v*·μ√(gR), ω = ω*·μ√(g/R), t = t*·√(R/g), s = s*·μR, θ = θ*·μ.
   Real velocity_scale() const { return mu_ * sqrt_(g_ * R_); }
+  /// μ√(g/R) [rad/s per unit ω*].
   Real spin_scale() const { return mu_ * sqrt_(g_ / R_); }
+  /// √(R/g) [s per unit t*].
   Real time_scale() const { return sqrt_(R_ / g_); }
+  /// μR [m per unit s*].
   Real distance_scale() const { return mu_ * R_; }
+  /// μ [rad per unit θ*].
   Real angle_scale() const { return mu_; }
+  /// The same motion in the paper's units.
   const dimensionless_motion<Profile>& dimensionless() const { return scaled_; }
 
  private:
@@ -167,7 +183,12 @@ class si_motion {
 /// One sample of a trajectory, dimensionless or SI.
 template <class Real>
 struct motion_sample {
-  Real time, speed, spin, ratio, distance, angle;
+  Real time;      ///< t (t* or s)
+  Real speed;     ///< v (v* or m/s)
+  Real spin;      ///< ω (ω* or rad/s)
+  Real ratio;     ///< ε = v*/ω* (0 or ∞ once one of them is 0)
+  Real distance;  ///< distance slid so far (s* or m)
+  Real angle;     ///< angle turned so far (θ* or rad)
 };
 
 /// The outcome of a throw: when and where it stops, and how ε ended.
@@ -433,8 +454,11 @@ Real stop_time(const Profile& profile, Real inertia_ratio, Real v0, Real omega0)
 template <class Profile>
 class tabulated_throw {
  public:
+  /// The profile's floating-point type.
   using Real = typename Profile::value_type;
 
+  /// Tabulates the throws of `profile` with γ = `inertia_ratio` (finite and
+  /// > 0, otherwise a domain error); about a second, allocates.
   tabulated_throw(const Profile& profile, Real inertia_ratio)
       : gamma_(
             detail::checked_positive(inertia_ratio, "spinslide::tabulated_throw<%1%>",
@@ -455,6 +479,7 @@ class tabulated_throw {
   Real stop_time(Real v0, Real omega0) const { return evaluate(v0, omega0).first; }
   /// s*(v0, ω0): the distance slid.
   Real distance(Real v0, Real omega0) const { return evaluate(v0, omega0).second; }
+  /// The number of Chebyshev pieces of the table.
   std::size_t pieces() const { return table_.size(); }
 
  private:

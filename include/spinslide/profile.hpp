@@ -166,15 +166,23 @@ class profile_base {
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class uniform_disk {
  public:
+  /// The floating-point type.
   using value_type = Real;
+  /// The Boost.Math policy for errors (domain errors throw by default).
   using policy_type = Policy;
+  /// 𝓕(ε) of disk.hpp; ε ≥ 0, +∞ allowed; NaN or ε < 0 is a domain error.
   Real force(Real eps) const { return spinslide::force(eps, Policy()); }
+  /// 𝓣(ε) of disk.hpp; domain and errors as force().
   Real torque(Real eps) const { return spinslide::torque(eps, Policy()); }
+  /// 𝓕(ε) and 𝓣(ε) from one evaluation; domain and errors as force().
   force_torque_result<Real> force_torque(Real eps) const {
     return spinslide::force_torque(eps, Policy());
   }
+  /// ⟨r⟩ = 2/3 = 𝓣(0).
   Real mean_radius() const { return Real(2) / 3; }
+  /// ⟨1/r⟩ = 2 (𝓕′(0) = ⟨1/r⟩/2 = 1).
   Real mean_inverse_radius() const { return Real(2); }
+  /// ⟨r²⟩ = 1/2 (ε𝓣(ε) → ⟨r²⟩/2 = 1/4 as ε → ∞).
   Real mean_square_radius() const { return Real(1) / 2; }
 };
 
@@ -184,9 +192,15 @@ class uniform_disk {
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class ring : public detail::profile_base<ring<Real, Policy>, Real, Policy> {
  public:
+  /// ⟨r⟩ = 1.
   Real mean_radius() const { return 1; }
+  /// ⟨1/r⟩ = 1.
   Real mean_inverse_radius() const { return 1; }
+  /// ⟨r²⟩ = 1.
   Real mean_square_radius() const { return 1; }
+  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that profile_base::force_torque() calls after
+  /// its domain check and the limits ε = 0 (𝓕 = 0, 𝓣 = ⟨r⟩) and ε = ∞ (𝓕 = 1, 𝓣 = 0);
+  /// call force_torque() instead.
   force_torque_result<Real> general(Real eps) const {
     BOOST_MATH_STD_USING
     return detail::ring_kernel(Real(1), eps, Real(abs(eps - 1)), detail::kernel_policy<Policy>());
@@ -201,14 +215,23 @@ class ring : public detail::profile_base<ring<Real, Policy>, Real, Policy> {
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class annulus : public detail::profile_base<annulus<Real, Policy>, Real, Policy> {
  public:
+  /// The annulus b ≤ r ≤ 1 with b = inner_ratio ∈ [0, 1); b outside it (or
+  /// NaN) is a domain error (std::domain_error).
   explicit annulus(Real inner_ratio)
       : b_(detail::checked_parameter<Real>(inner_ratio, Real(0), Real(1), true,
                                            "spinslide::annulus<%1%>::annulus(%1%)",
                                            "Got inner_ratio = %1%, but it must be in [0, 1).")) {}
+  /// b.
   Real inner_ratio() const { return b_; }
+  /// ⟨r⟩ = 2(1 + b + b²)/(3(1 + b)) = 𝓣(0).
   Real mean_radius() const { return 2 * (1 + b_ + b_ * b_) / (3 * (1 + b_)); }
+  /// ⟨1/r⟩ = 2/(1 + b).
   Real mean_inverse_radius() const { return 2 / (1 + b_); }
+  /// ⟨r²⟩ = (1 + b²)/2.
   Real mean_square_radius() const { return (1 + b_ * b_) / 2; }
+  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that profile_base::force_torque() calls after
+  /// its domain check and the limits ε = 0 (𝓕 = 0, 𝓣 = ⟨r⟩) and ε = ∞ (𝓕 = 1, 𝓣 = 0);
+  /// call force_torque() instead.
   force_torque_result<Real> general(Real eps) const {
     if (b_ == 0) return spinslide::force_torque(eps, Policy());
     if (b_ <= Real(0.5)) {
@@ -232,9 +255,15 @@ class annulus : public detail::profile_base<annulus<Real, Policy>, Real, Policy>
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class hertz : public detail::profile_base<hertz<Real, Policy>, Real, Policy> {
  public:
+  /// ⟨r⟩ = 3π/16.
   Real mean_radius() const { return 3 * boost::math::constants::pi<Real>() / 16; }
+  /// ⟨1/r⟩ = 3π/4.
   Real mean_inverse_radius() const { return 3 * boost::math::constants::pi<Real>() / 4; }
+  /// ⟨r²⟩ = 2/5.
   Real mean_square_radius() const { return Real(2) / 5; }
+  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that profile_base::force_torque() calls after
+  /// its domain check and the limits ε = 0 (𝓕 = 0, 𝓣 = ⟨r⟩) and ε = ∞ (𝓕 = 1, 𝓣 = 0);
+  /// call force_torque() instead.  Ring quadrature (theory §6), relative error ≲ 1e-13.
   force_torque_result<Real> general(Real eps) const {
     // Load per unit radius 3 r √(1 − r²), normalised: ∫₀¹ 3r√(1−r²) dr = 1.
     auto w = [](const detail::ring_node<Real>& n) {
@@ -252,9 +281,15 @@ class hertz : public detail::profile_base<hertz<Real, Policy>, Real, Policy> {
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class boussinesq : public detail::profile_base<boussinesq<Real, Policy>, Real, Policy> {
  public:
+  /// ⟨r⟩ = π/4.
   Real mean_radius() const { return boost::math::constants::pi<Real>() / 4; }
+  /// ⟨1/r⟩ = π/2.
   Real mean_inverse_radius() const { return boost::math::constants::pi<Real>() / 2; }
+  /// ⟨r²⟩ = 2/3.
   Real mean_square_radius() const { return Real(2) / 3; }
+  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that profile_base::force_torque() calls after
+  /// its domain check and the limits ε = 0 (𝓕 = 0, 𝓣 = ⟨r⟩) and ε = ∞ (𝓕 = 1, 𝓣 = 0);
+  /// call force_torque() instead.  Ring quadrature (theory §6), relative error ≲ 1e-13.
   force_torque_result<Real> general(Real eps) const {
     // Load per unit radius r/√(1 − r²), normalised.
     auto w = [](const detail::ring_node<Real>& n) {
@@ -272,16 +307,25 @@ template <class Profile>
 class scaled : public detail::profile_base<scaled<Profile>, typename Profile::value_type,
                                            typename Profile::policy_type> {
  public:
+  /// The floating-point type.
   using Real = typename Profile::value_type;
+  /// `p` shrunk to radius a = `radius` ∈ (0, 1]; otherwise a domain error.
   scaled(Profile p, Real radius)
       : p_(std::move(p)),
         a_(detail::checked_parameter<Real>(radius, std::numeric_limits<Real>::min(), Real(1), false,
                                            "spinslide::scaled<%1%>::scaled",
                                            "Got radius = %1%, but it must be in (0, 1].")) {}
+  /// a.
   Real radius() const { return a_; }
+  /// ⟨r⟩ = a⟨r⟩_P.
   Real mean_radius() const { return a_ * p_.mean_radius(); }
+  /// ⟨1/r⟩ = ⟨1/r⟩_P/a.
   Real mean_inverse_radius() const { return p_.mean_inverse_radius() / a_; }
+  /// ⟨r²⟩ = a²⟨r²⟩_P.
   Real mean_square_radius() const { return a_ * a_ * p_.mean_square_radius(); }
+  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that profile_base::force_torque() calls after
+  /// its domain check and the limits ε = 0 (𝓕 = 0, 𝓣 = ⟨r⟩) and ε = ∞ (𝓕 = 1, 𝓣 = 0);
+  /// call force_torque() instead.  𝓕_P(ε/a) and a𝓣_P(ε/a).
   force_torque_result<Real> general(Real eps) const {
     const auto ft = p_.force_torque(eps / a_);
     return {ft.force, a_ * ft.torque};
@@ -302,20 +346,30 @@ class weighted_sum
           weighted_sum<Real, Profiles...>, Real,
           typename std::tuple_element<0, std::tuple<Profiles...>>::type::policy_type> {
  public:
+  /// The number of parts.
   static constexpr std::size_t size = sizeof...(Profiles);
+  /// Load fractions `weights` (normalised; each finite and ≥ 0, sum > 0,
+  /// otherwise a domain error) of the `parts`.
   weighted_sum(const std::array<Real, size>& weights, Profiles... parts)
       : parts_(std::move(parts)...), w_(normalised(weights)) {}
 
+  /// The normalised weights wᵢ.
   const std::array<Real, size>& weights() const { return w_; }
+  /// ⟨r⟩ = Σ wᵢ⟨r⟩ᵢ.
   Real mean_radius() const {
     return sum([](const auto& p) { return p.mean_radius(); });
   }
+  /// ⟨1/r⟩ = Σ wᵢ⟨1/r⟩ᵢ.
   Real mean_inverse_radius() const {
     return sum([](const auto& p) { return p.mean_inverse_radius(); });
   }
+  /// ⟨r²⟩ = Σ wᵢ⟨r²⟩ᵢ.
   Real mean_square_radius() const {
     return sum([](const auto& p) { return p.mean_square_radius(); });
   }
+  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that profile_base::force_torque() calls after
+  /// its domain check and the limits ε = 0 (𝓕 = 0, 𝓣 = ⟨r⟩) and ε = ∞ (𝓕 = 1, 𝓣 = 0);
+  /// call force_torque() instead.  Σ wᵢ𝓕ᵢ(ε) and Σ wᵢ𝓣ᵢ(ε).
   force_torque_result<Real> general(Real eps) const {
     return {sum([eps](const auto& p) { return p.force(eps); }),
             sum([eps](const auto& p) { return p.torque(eps); })};
@@ -404,13 +458,20 @@ class radial_profile
     mean_square_ = moment(2) / total_;
   }
 
+  /// The inner radius of the support.
   Real inner_radius() const { return inner_; }
+  /// ⟨r⟩, by quadrature at construction.
   Real mean_radius() const { return mean_; }
+  /// ⟨1/r⟩, by quadrature at construction.
   Real mean_inverse_radius() const { return mean_inverse_; }
+  /// ⟨r²⟩, by quadrature at construction.
   Real mean_square_radius() const { return mean_square_; }
   /// The load per unit radius, r p(r) / ∫ r p dr (integrates to 1 over [inner, 1]).
   Real load_density(Real r) const { return r * pressure(r, 1 - r) / total_; }
 
+  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that profile_base::force_torque() calls after
+  /// its domain check and the limits ε = 0 (𝓕 = 0, 𝓣 = ⟨r⟩) and ε = ∞ (𝓕 = 1, 𝓣 = 0);
+  /// call force_torque() instead.  Ring quadrature of the normalised load.
   force_torque_result<Real> general(Real eps) const {
     auto w = [this](const detail::ring_node<Real>& n) {
       return n.r * pressure(n.r, n.one_minus_r) / total_;

@@ -31,10 +31,16 @@ namespace spinslide {
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class tabulated_profile {
  public:
+  /// The floating-point type.
   using value_type = Real;
+  /// The Boost.Math policy for domain errors.
   using policy_type = Policy;
+  /// The degree of every piece.
   static constexpr std::size_t degree = 8;
 
+  /// Tabulates `profile` (any profile; its errors propagate) to `tolerance`
+  /// (relative trailing Chebyshev coefficients), bisecting at most
+  /// `max_depth` levels.  Allocates; milliseconds to a second.
   template <class Profile>
   explicit tabulated_profile(const Profile& profile, Real tolerance = Real(1e-13),
                              int max_depth = 40)
@@ -51,6 +57,9 @@ class tabulated_profile {
     table_ = detail::piecewise_chebyshev_pair<Real, degree>(g, tolerance, max_depth);
   }
 
+  /// 𝓕(ε) and 𝓣(ε) of the tabulated profile (≤ 1e-10 relative, tested;
+  /// < 3e-15 measured); ε ≥ 0 and +∞; NaN or ε < 0 is a domain error through
+  /// the policy.  No allocation; thread-safe.
   force_torque_result<Real> force_torque(Real eps) const {
     force_torque_result<Real> r;
     if (detail::profile_domain_error(eps, "spinslide::tabulated_profile<%1%>::force_torque(%1%)", r,
@@ -63,14 +72,20 @@ class tabulated_profile {
     const auto g = table_(t);
     return {t * g.first, s * g.second};
   }
+  /// 𝓕(ε); as force_torque().
   Real force(Real eps) const { return force_torque(eps).force; }
+  /// 𝓣(ε); as force_torque().
   Real torque(Real eps) const { return force_torque(eps).torque; }
+  /// ⟨r⟩ of the tabulated profile.
   Real mean_radius() const { return mean_; }
+  /// ⟨1/r⟩ of the tabulated profile.
   Real mean_inverse_radius() const { return mean_inverse_; }
+  /// ⟨r²⟩ of the tabulated profile.
   Real mean_square_radius() const { return mean_square_; }
 
-  /// Number of Chebyshev pieces, and the deepest bisection level used.
+  /// The number of Chebyshev pieces.
   std::size_t pieces() const { return table_.size(); }
+  /// The deepest bisection level used.
   int deepest_level() const { return table_.deepest(); }
 
  private:

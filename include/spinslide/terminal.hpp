@@ -35,8 +35,8 @@ enum class terminal_regime {
 /// The terminal regime and the limit of ε: ε₀, +∞ or 0.
 template <class Real>
 struct terminal_state {
-  terminal_regime regime;
-  Real ratio;
+  terminal_regime regime;  ///< how ε behaves as the motion stops
+  Real ratio;              ///< the limit of ε: ε₀, +∞ (pure sliding) or 0 (pure spinning)
 };
 
 /// The inertia ratios γ for which both ends of the flow repel, so that every
@@ -45,10 +45,12 @@ struct terminal_state {
 /// uniform disk: 1/4 < γ < 2/3.  The window is empty if lower ≥ upper.
 template <class Real>
 struct inertia_window {
-  Real lower;
-  Real upper;
+  Real lower;  ///< ⟨r²⟩/2: below it, ε → ∞
+  Real upper;  ///< 2⟨r⟩/⟨1/r⟩: above it, ε → 0
 };
 
+/// The window (W) of `p` from its moments: ⟨r²⟩/2 < γ < 2⟨r⟩/⟨1/r⟩.  No
+/// errors of its own (a profile's moments are finite and > 0).
 template <class Profile>
 inertia_window<typename Profile::value_type> terminal_window(const Profile& p) {
   return {p.mean_square_radius() / 2, 2 * p.mean_radius() / p.mean_inverse_radius()};
