@@ -145,7 +145,8 @@ class contact_law {
     Real f, t;
     magnitudes(speed, w, radius, normal_force, friction_coefficient, f, t);
     spatial_friction<Vec3> out{Vec3{}, Vec3{}};
-    const Real k = speed > 0 ? Real(-f / speed) : Real(0);
+    // NaN f: a domain error, through a policy that does not throw.
+    const Real k = (boost::math::isnan)(f) ? f : speed > 0 ? Real(-f / speed) : Real(0);
     detail::set<0>(out.force, k * v[0]);
     detail::set<1>(out.force, k * v[1]);
     detail::set<2>(out.force, k * v[2]);
@@ -221,6 +222,10 @@ class contact_law {
     const Real speed = norm(vx, vy, Real(0));
     Real f;
     magnitudes(speed, spin, a, N, mu, f, t);
+    if ((boost::math::isnan)(f)) {  // a domain error, through a policy that does not throw
+      fx = fy = f;
+      return;
+    }
     fx = speed > 0 ? Real(-f * vx / speed) : Real(0);
     fy = speed > 0 ? Real(-f * vy / speed) : Real(0);
   }

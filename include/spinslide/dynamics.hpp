@@ -53,6 +53,13 @@ Real checked_speed(Real x, const char* function, const char* message, const Poli
 template <class Real>
 struct throw_input {
   Real gamma, v0, omega0;
+  // False once a check has reported an error through a policy that does not
+  // throw (errno_on_error, ignore_error): the entry point then returns NaN
+  // instead of computing on, and reporting a second, different error.
+  bool valid() const {
+    return !(boost::math::isnan)(gamma) && !(boost::math::isnan)(v0) &&
+           !(boost::math::isnan)(omega0);
+  }
 };
 
 // The checks every throw entry point makes: γ finite and > 0, speeds finite
@@ -373,6 +380,10 @@ stop_result<Real> simulate_throw(const Profile& profile, Real inertia_ratio, Rea
                                  Observer observer) {
   const auto in = detail::checked_throw("spinslide::simulate_throw<%1%>", inertia_ratio, v0, omega0,
                                         typename Profile::policy_type());
+  if (!in.valid()) {
+    const Real nan = std::numeric_limits<Real>::quiet_NaN();
+    return {nan, nan, nan, {terminal_regime::sliding_and_spinning, nan}};
+  }
   std::vector<Real> none;
   std::vector<motion_sample<Real>> unused;
   return detail::integrate_stop(profile, in.gamma, in.v0, in.omega0, observer, none, unused);
@@ -393,6 +404,11 @@ std::vector<motion_sample<Real>> trajectory(const Profile& profile, Real inertia
           Policy());
   }
   std::vector<motion_sample<Real>> samples;
+  if (!in.valid()) {
+    const Real nan = std::numeric_limits<Real>::quiet_NaN();
+    samples.assign(times.size(), motion_sample<Real>{nan, nan, nan, nan, nan, nan});
+    return samples;
+  }
   samples.reserve(times.size());
   detail::integrate_stop(
       profile, in.gamma, in.v0, in.omega0, [](const motion_sample<Real>&) {}, times, samples);
@@ -486,9 +502,11 @@ class tabulated_throw {
   std::pair<Real, Real> evaluate(Real v0, Real w0) const {
     static const char* function = "spinslide::tabulated_throw<%1%>";
     using Policy = typename Profile::policy_type;
-    detail::checked_speed(v0, function, "Got v0 = %1%, but it must be finite and >= 0.", Policy());
-    detail::checked_speed(w0, function, "Got omega0 = %1%, but it must be finite and >= 0.",
-                          Policy());
+    v0 = detail::checked_speed(v0, function, "Got v0 = %1%, but it must be finite and >= 0.",
+                               Policy());
+    w0 = detail::checked_speed(w0, function, "Got omega0 = %1%, but it must be finite and >= 0.",
+                               Policy());
+    if ((boost::math::isnan)(v0) || (boost::math::isnan)(w0)) return {v0 + w0, v0 + w0};
     if (w0 == 0) return {v0, v0 * v0 / 2};           // pure sliding, exact
     if (v0 == 0) return {w0 / spin_rate_, Real(0)};  // pure spinning, exact
     const Real s = v0 + w0;                          // ω0 (1 + ε)

@@ -147,6 +147,9 @@ terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio)
   using Policy = typename Profile::policy_type;
   static const char* function = "spinslide::terminal_motion<%1%>(profile, %1%)";
   const Real gamma = detail::checked_inertia_ratio(inertia_ratio, function, Policy());
+  // A bad γ was reported through a policy that does not throw: return its NaN
+  // rather than go on to a second, different error.
+  if ((boost::math::isnan)(gamma)) return {terminal_regime::sliding_and_spinning, gamma};
   const auto ends = detail::attracting_ends(profile, gamma);
   const Real inf = std::numeric_limits<Real>::infinity();
   if (ends.first && ends.second) {
@@ -183,6 +186,7 @@ terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio,
   using Policy = typename Profile::policy_type;
   static const char* function = "spinslide::terminal_motion<%1%>(profile, %1%, %1%)";
   const Real gamma = detail::checked_inertia_ratio(inertia_ratio, function, Policy());
+  if ((boost::math::isnan)(gamma)) return {terminal_regime::sliding_and_spinning, gamma};
   const Real inf = std::numeric_limits<Real>::infinity();
   if (!(initial_ratio >= 0)) {
     const Real bad = boost::math::policies::raise_domain_error<Real>(
