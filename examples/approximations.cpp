@@ -105,11 +105,8 @@ int main(int argc, char** argv) {
       summarise("first-order Pade", "(proposed cheap coupled model)", pade)};
 
   const std::string md = out + "/approximations.md";
-  FILE* f = std::fopen(md.c_str(), "w");
-  if (!f) {
-    std::fprintf(stderr, "cannot write %s\n", md.c_str());
-    return 1;
-  }
+  FILE* f = spinslide_examples::open_output(md, "approximations");
+  if (!f) return 1;
   std::fprintf(f, "# Engine friction models against the exact law\n\n");
   std::fprintf(
       f,

@@ -1,9 +1,10 @@
 //  Copyright (c) 2026 the spinslide developers.
 //  Distributed under the Boost Software License, Version 1.0.
 //
-// The examples' one way to draw a figure: write a gnuplot script into the
-// output directory and run gnuplot there (paths in the script are relative to
-// it).  Without gnuplot the data files are still written; the caller says so.
+// The examples' output helpers.  One way to draw a figure: write a gnuplot
+// script into the output directory and run gnuplot there (paths in the script
+// are relative to it).  Without gnuplot the data files are still written; the
+// caller says so.
 #ifndef SPINSLIDE_EXAMPLES_GNUPLOT_HPP
 #define SPINSLIDE_EXAMPLES_GNUPLOT_HPP
 
@@ -12,6 +13,14 @@
 #include <string>
 
 namespace spinslide_examples {
+
+// Opens `path` for writing; on failure says so on stderr, naming `program`,
+// and returns null.
+inline FILE* open_output(const std::string& path, const char* program) {
+  FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) std::fprintf(stderr, "%s: cannot write %s\n", program, path.c_str());
+  return f;
+}
 
 // Writes `script` to dir/name and runs it with gnuplot in dir; true if a
 // figure was made.

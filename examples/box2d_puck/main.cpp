@@ -76,11 +76,8 @@ int main(int argc, char** argv) {
   const double N = m * g;
 
   const std::string csv = out + "/box2d_puck.csv";
-  FILE* f = std::fopen(csv.c_str(), "w");
-  if (!f) {
-    std::fprintf(stderr, "cannot write %s\n", csv.c_str());
-    return 1;
-  }
+  FILE* f = spinslide_examples::open_output(csv, "box2d_puck");
+  if (!f) return 1;
   std::fprintf(f, "# t  A: x y angle v R*omega ratio   B: x y angle v R*omega ratio\n");
   puck_log la, lb;
   const double stopped = 1e-3;  // m/s: below this a motion counts as stopped

@@ -240,11 +240,8 @@ inline int analyse(const throws_t& throws, const std::string& dir, bool simulate
   }
   // Fig. 5: measured F and T with the fitted μ(n), over the theory curves.
   const std::string csv = dir + "/cd_measured.csv";
-  FILE* f = std::fopen(csv.c_str(), "w");
-  if (!f) {
-    std::fprintf(stderr, "cd_experiment: cannot write %s\n", csv.c_str());
-    return 1;
-  }
+  FILE* f = spinslide_examples::open_output(csv, "cd_experiment");
+  if (!f) return 1;
   std::fprintf(f, "n,eps,muF,muT,mu_from_force,mu_from_torque,mu_fit,F,T\n");
   double rms_F = 0, rms_T = 0;
   for (const auto& r : m) {

@@ -43,9 +43,7 @@ const double pi = boost::math::constants::pi<double>();
 struct output {
   std::string dir;
   FILE* open(const std::string& name) const {
-    FILE* f = std::fopen((dir + "/" + name).c_str(), "w");
-    if (!f) std::fprintf(stderr, "paper: cannot write %s/%s\n", dir.c_str(), name.c_str());
-    return f;
+    return spinslide_examples::open_output(dir + "/" + name, "paper");
   }
   void figure(const std::string& stem, const std::string& what, const std::string& script) const {
     const bool png = spinslide_examples::plot(dir, stem + ".gp", script);

@@ -84,11 +84,8 @@ int main(int argc, char** argv) {
               spinslide::terminal_motion(spinslide::annulus<>(0.125), 0.5078125).ratio);
 
   const std::string csv = dir + "/regimes.csv";
-  FILE* f = std::fopen(csv.c_str(), "w");
-  if (!f) {
-    std::fprintf(stderr, "regimes: cannot write %s\n", csv.c_str());
-    return 1;
-  }
+  FILE* f = spinslide_examples::open_output(csv, "regimes");
+  if (!f) return 1;
   std::fprintf(f, "gamma");
   for (const auto& c : cols) std::fprintf(f, ",%s", c.name.c_str());
   std::fprintf(f, "\n");
