@@ -126,7 +126,7 @@ struct rational {
   std::array<double, 9> p, q;  // q[0] = 1
   double operator()(double u) const {
     double n = p[8], d = q[8];
-    for (int k = 7; k >= 0; --k) {
+    for (std::size_t k = 8; k-- > 0;) {
       n = n * u + p[k];
       d = d * u + q[k];
     }
@@ -161,9 +161,9 @@ std::pair<rational, rational> fit_rationals() {
   }
   auto make = [](const std::vector<long double>& x) {
     rational r;
-    for (int k = 0; k <= 8; ++k) r.p[k] = static_cast<double>(x[k]);
+    for (std::size_t k = 0; k <= 8; ++k) r.p[k] = static_cast<double>(x[k]);
     r.q[0] = 1;
-    for (int k = 1; k <= 8; ++k) r.q[k] = static_cast<double>(x[8 + k]);
+    for (std::size_t k = 1; k <= 8; ++k) r.q[k] = static_cast<double>(x[8 + k]);
     return r;
   };
   return {make(spinslide_tools::least_squares(AF, bF)),

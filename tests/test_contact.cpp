@@ -64,14 +64,14 @@ TEST(ContactLaw, ThreeDimensionalMatchesPlanarInTheTangentPlane) {
   const vec3 t2 = {-2.0 / 3, 2.0 / 3, -1.0 / 3};  // n × t1
   const double vt1 = 0.3, vt2 = -0.2, vn = 5.0, wn = 7.0, wt = 3.0;
   vec3 v, w;
-  for (int i = 0; i < 3; ++i) {
+  for (std::size_t i = 0; i < 3; ++i) {
     v[i] = vt1 * t1[i] + vt2 * t2[i] + vn * n[i];  // the normal part must be ignored
     w[i] = wn * n[i] + wt * t1[i];                 // rolling must be ignored
   }
   const auto r3 = law(v, w, n, 0.02, 3.0, 0.4);
   const auto r2 = law(vec2{vt1, vt2}, wn, 0.02, 3.0, 0.4);
   // Removing the normal part (|v_n| = 5 against |v_t| = 0.36) costs ~4 bits.
-  for (int i = 0; i < 3; ++i) {
+  for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_NEAR(r3.force[i], r2.force[0] * t1[i] + r2.force[1] * t2[i], 1e-14);
     EXPECT_NEAR(r3.torque[i], r2.torque * n[i], 1e-14);
   }
@@ -88,9 +88,9 @@ TEST(ContactLaw, UsersVectorTypes) {
   const auto e =
       law(eigen_like3(0.3, 0.4, 0), eigen_like3(0, 0, 10), eigen_like3(0, 0, 1), 0.05, 2.0, 0.5);
   const auto a = law(vec3{0.3, 0.4, 0}, vec3{0, 0, 10}, vec3{0, 0, 1}, 0.05, 2.0, 0.5);
-  for (int i = 0; i < 3; ++i) {
-    EXPECT_EQ(e.force[i], a.force[i]);
-    EXPECT_EQ(e.torque[i], a.torque[i]);
+  for (int i = 0; i < 3; ++i) {  // eigen_like3 is indexed by int, std::array by std::size_t
+    EXPECT_EQ(e.force[i], a.force[static_cast<std::size_t>(i)]);
+    EXPECT_EQ(e.torque[i], a.torque[static_cast<std::size_t>(i)]);
   }
   EXPECT_EQ(e.force.x(), a.force[0]);
 }

@@ -400,7 +400,7 @@ TEST(Tabulated, SharedBetweenThreadsGivesTheSerialResults) {
   for (std::size_t i = 0; i < xs.size(); ++i) serial[i] = tab.force(xs[i]) + 7 * tab.torque(xs[i]);
   std::vector<std::vector<double>> out(4, std::vector<double>(xs.size()));
   std::vector<std::thread> threads;
-  for (int t = 0; t < 4; ++t)
+  for (std::size_t t = 0; t < 4; ++t)
     threads.emplace_back([&, t] {
       for (std::size_t i = 0; i < xs.size(); ++i)
         out[t][i] = tab.force(xs[i]) + 7 * tab.torque(xs[i]);

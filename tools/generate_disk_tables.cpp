@@ -103,10 +103,10 @@ struct piece {
 
 // The library's evaluation (disk_fast.hpp) of function f of a piece.
 template <class Real>
-Real evaluate(const piece<Real>& p, int degree, int f, Real y) {
+Real evaluate(const piece<Real>& p, std::size_t degree, std::size_t f, Real y) {
   const Real x = y * p.scale + p.offset;
   Real s = p.c[3 * degree + f];
-  for (int k = degree; k-- > 0;) s = s * x + p.c[3 * k + f];
+  for (std::size_t k = degree; k-- > 0;) s = s * x + p.c[3 * k + f];
   return s;
 }
 
@@ -117,7 +117,8 @@ struct report {
 
 template <class Real>
 std::vector<piece<Real>> build(const layout& L, report& r) {
-  const int n = L.degree + 1, sample = L.degree + 12;
+  const std::size_t degree = static_cast<std::size_t>(L.degree), n = degree + 1,
+                    sample = degree + 12;
   const mp eps = L.epsilon;
   std::vector<piece<Real>> table;
   std::mt19937_64 rng(20261122);
@@ -126,21 +127,22 @@ std::vector<piece<Real>> build(const layout& L, report& r) {
     const auto iv = L.interval(i);
     const mp mid = (iv.first + iv.second) / 2, half = (iv.second - iv.first) / 2;
     std::vector<std::array<mp, 3>> v(sample);
-    for (int j = 0; j < sample; ++j) v[j] = functions(mid + half * chebyshev_point<mp>(j, sample));
+    for (std::size_t j = 0; j < sample; ++j)
+      v[j] = functions(mid + half * chebyshev_point<mp>(j, sample));
     piece<Real> p;
     // Exact for pieces i ≥ 1: a power of two and an integer.
     p.scale = static_cast<Real>(1 / half);
     p.offset = static_cast<Real>(-mid / half);
     p.c.resize(3 * n);
-    for (int f = 0; f < 3; ++f) {
+    for (std::size_t f = 0; f < 3; ++f) {
       std::vector<mp> values(sample), c(sample), m(n);
-      for (int j = 0; j < sample; ++j) values[j] = v[j][f];
+      for (std::size_t j = 0; j < sample; ++j) values[j] = v[j][f];
       chebyshev_coefficients(values.data(), sample, c.data());
       mp tail = 0;
-      for (int k = n; k < sample; ++k) tail += abs(c[k]);
+      for (std::size_t k = n; k < sample; ++k) tail += abs(c[k]);
       r.tail[f] = std::max(r.tail[f], static_cast<double>(tail / abs(c[0] / 2) / eps));
       chebyshev_to_monomial(c.data(), n, m.data());
-      for (int k = 0; k < n; ++k) p.c[3 * k + f] = static_cast<Real>(m[k]);
+      for (std::size_t k = 0; k < n; ++k) p.c[3 * k + f] = static_cast<Real>(m[k]);
     }
     // Pin the ends, y = 0 (ε = 1) and y = 1 (ε = 0 and ε = ∞), to the
     // correctly rounded values, so that 𝓕(1) = 8/(3π), 𝓣(1) = 8/(9π),
@@ -153,11 +155,11 @@ std::vector<piece<Real>> build(const layout& L, report& r) {
       if (end != 0 && end != 1) continue;
       const auto exact = functions(end);
       const Real y = static_cast<Real>(end);
-      for (int f = 0; f < 3; ++f) {
+      for (std::size_t f = 0; f < 3; ++f) {
         const Real target = static_cast<Real>(exact[f]);
         // First move c₀ by the whole difference (the lower-degree float table
         // is off by far more than an ulp of double), then search.
-        for (int step = 0; step < 3; ++step) p.c[f] += target - evaluate(p, L.degree, f, y);
+        for (int step = 0; step < 3; ++step) p.c[f] += target - evaluate(p, degree, f, y);
         const Real c0 = p.c[f], c1 = p.c[3 + f];
         bool pinned = false;
         for (int a0 = 0; a0 <= 4 && !pinned; ++a0) {
@@ -166,7 +168,7 @@ std::vector<piece<Real>> build(const layout& L, report& r) {
               for (int d1 : {a1, -a1}) {
                 p.c[f] = boost::math::float_advance(c0, d0);
                 p.c[3 + f] = boost::math::float_advance(c1, d1);
-                if (evaluate(p, L.degree, f, y) == target) {
+                if (evaluate(p, degree, f, y) == target) {
                   pinned = true;
                   break;
                 }
@@ -176,7 +178,7 @@ std::vector<piece<Real>> build(const layout& L, report& r) {
           }
         }
         if (!pinned) {
-          std::fprintf(stderr, "could not pin function %d at y = %g\n", f,
+          std::fprintf(stderr, "could not pin function %zu at y = %g\n", f,
                        static_cast<double>(end));
           std::exit(1);
         }
@@ -188,8 +190,8 @@ std::vector<piece<Real>> build(const layout& L, report& r) {
       const Real y = static_cast<Real>(ym);
       if (mp(y) < iv.first || mp(y) > iv.second) continue;
       const auto exact = functions(mp(y));
-      for (int f = 0; f < 3; ++f) {
-        const mp err = abs(mp(evaluate(p, L.degree, f, y)) - exact[f]) / exact[f] / eps;
+      for (std::size_t f = 0; f < 3; ++f) {
+        const mp err = abs(mp(evaluate(p, degree, f, y)) - exact[f]) / exact[f] / eps;
         r.worst[f] = std::max(r.worst[f], static_cast<double>(err));
       }
     }
@@ -272,7 +274,7 @@ double evaluate_global(const global_fit& g, double y) {
   return c.anchor + (s * P + L * Q);
 }
 
-std::array<global_fit, 3> fit_global(int p_degree, int q_degree) {
+std::array<global_fit, 3> fit_global(std::size_t p_degree, std::size_t q_degree) {
   using boost::math::constants::pi;
   const int n = 300;
   // Check points: uniform in y, log-uniform down to 1e-40 and up to 1 − 1e-16.
@@ -288,8 +290,8 @@ std::array<global_fit, 3> fit_global(int p_degree, int q_degree) {
   const mp eps = std::numeric_limits<double>::epsilon();
   std::array<global_fit, 3> out;
   std::array<std::array<std::vector<mp>, 2>, 3> exact_coefficients;
-  for (int f = 0; f < 3; ++f) {
-    for (int h = 0; h < 2; ++h) {
+  for (std::size_t f = 0; f < 3; ++f) {
+    for (std::size_t h = 0; h < 2; ++h) {
       const mp lo = h ? mp(0.5) : mp(0), hi = h ? mp(1) : mp(0.5);
       const mp anchor = functions(h ? mp(1) : mp(0))[f];
       std::vector<std::vector<mp>> A;
@@ -300,29 +302,29 @@ std::array<global_fit, 3> fit_global(int p_degree, int q_degree) {
         const mp fy = functions(y)[f];
         std::vector<mp> row;
         mp w = 1;
-        for (int k = 0; k <= p_degree; ++k, w *= v) row.push_back(s * w / fy);
+        for (std::size_t k = 0; k <= p_degree; ++k, w *= v) row.push_back(s * w / fy);
         w = 1;
-        for (int k = 0; k <= q_degree; ++k, w *= v) row.push_back(L * w / fy);
+        for (std::size_t k = 0; k <= q_degree; ++k, w *= v) row.push_back(L * w / fy);
         A.push_back(row);
         b.push_back((fy - anchor) / fy);
       }
       exact_coefficients[f][h] = spinslide_tools::least_squares(A, b);
       global_piece& c = out[f].piece[h];
       c.anchor = static_cast<double>(anchor);
-      for (int k = 0; k <= p_degree; ++k)
+      for (std::size_t k = 0; k <= p_degree; ++k)
         c.p.push_back(static_cast<double>(exact_coefficients[f][h][k]));
-      for (int k = 0; k <= q_degree; ++k)
+      for (std::size_t k = 0; k <= q_degree; ++k)
         c.q.push_back(static_cast<double>(exact_coefficients[f][h][p_degree + 1 + k]));
     }
     global_fit& g = out[f];
     for (const double y : check) {
       const mp exact = functions(mp(y))[f];
-      const int h = y >= 0.5;
+      const std::size_t h = y >= 0.5;
       const auto& x = exact_coefficients[f][h];
       const mp ym = y, v = h ? 4 * ym - 3 : 4 * ym - 1;
       mp P = 0, Q = 0;
-      for (int k = p_degree; k >= 0; --k) P = P * v + x[k];
-      for (int k = q_degree; k >= 0; --k) Q = Q * v + x[p_degree + 1 + k];
+      for (std::size_t k = p_degree + 1; k-- > 0;) P = P * v + x[k];
+      for (std::size_t k = q_degree + 1; k-- > 0;) Q = Q * v + x[p_degree + 1 + k];
       const mp fit = functions(h ? mp(1) : mp(0))[f] + (h ? ym - 1 : ym) * P +
                      (y == 0 ? mp(0) : ym * ym * log(ym) * Q);
       g.approximation =
@@ -353,7 +355,7 @@ void emit_global(const std::array<global_fit, 3>& fits) {
       "  static constexpr int q_degree = %zu;\n  static constexpr int row = %zu;\n};\n",
       np, nq, np + nq + 3);
   const char* names[3] = {"g", "t1", "t2"};
-  for (int f = 0; f < 3; ++f) {
+  for (std::size_t f = 0; f < 3; ++f) {
     std::printf("alignas(64) inline constexpr double disk_global_%s[2][%zu] = {\n", names[f],
                 np + nq + 3);
     for (int h = 0; h < 2; ++h) {

@@ -188,7 +188,7 @@ inline int analyse(const throws_t& throws, const std::string& dir, bool simulate
       continue;
     }
     std::vector<double> t, x, y, th;
-    for (int i = 0; i < fit_frames; ++i) {
+    for (std::size_t i = 0; i < static_cast<std::size_t>(fit_frames); ++i) {
       t.push_back(frames[i].t);
       x.push_back(frames[i].x);
       y.push_back(frames[i].y);
@@ -260,7 +260,8 @@ inline int analyse(const throws_t& throws, const std::string& dir, bool simulate
   }
   std::fclose(f);
   std::printf("measured points against the theory: rms deviation F %.4f, T %.4f\n",
-              std::sqrt(rms_F / m.size()), std::sqrt(rms_T / m.size()));
+              std::sqrt(rms_F / static_cast<double>(m.size())),
+              std::sqrt(rms_T / static_cast<double>(m.size())));
   const std::string script =
       "set terminal pngcairo size 800,550 font ',11'\nset output 'fig5_experiment.png'\n"
       "set datafile separator ','\nset logscale x\nset grid\nset key top left\n"

@@ -78,7 +78,7 @@ class elliptic_limit_surface
   force_torque_result<Real> general(Real eps) const {
     BOOST_MATH_STD_USING
     const Real h = hypot(eps, tau_);
-    return {eps / h, tau_ * tau_ / h};
+    return {eps / h, tau_ * (tau_ / h)};  // τ/h ≤ 1: no overflow for any τ
   }
 
  private:
@@ -114,7 +114,8 @@ class pade_approximation
   /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that force_torque() calls after its domain
   /// check and the limits ε = 0 and ε = ∞; call force_torque() instead.
   force_torque_result<Real> general(Real eps) const {
-    return {eps / (eps + 2 / inv_), r_ * sq_ / (sq_ + 2 * r_ * eps)};
+    // Written so that no intermediate overflows for any moments and ε.
+    return {1 / (1 + (2 / inv_) / eps), r_ / (1 + 2 * eps * (r_ / sq_))};
   }
 
  private:

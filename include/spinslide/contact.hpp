@@ -85,7 +85,8 @@ struct spatial_friction {
 /// by min(1, ρ/v_s): continuous everywhere (F, T → 0 as ρ → 0 whatever the
 /// direction), still dissipative (the factor is ≥ 0), and exactly the
 /// unregularized law for ρ ≥ v_s.  It keeps the coupling: the direction of
-/// (v, aω) still sets ε.  Finite input never gives NaN or ∞.
+/// (v, aω) still sets ε.  Finite input never gives NaN, and gives ∞ only where the
+/// true result overflows; a speed |v| that overflows is a domain error.
 template <class Profile = uniform_disk<double>>
 class contact_law {
  public:
@@ -146,13 +147,17 @@ class contact_law {
     magnitudes(speed, w, radius, normal_force, friction_coefficient, f, t);
     spatial_friction<Vec3> out{Vec3{}, Vec3{}};
     // NaN f: a domain error, through a policy that does not throw.
-    const Real k = (boost::math::isnan)(f) ? f : speed > 0 ? Real(-f / speed) : Real(0);
-    detail::set<0>(out.force, k * v[0]);
-    detail::set<1>(out.force, k * v[1]);
-    detail::set<2>(out.force, k * v[2]);
-    detail::set<0>(out.torque, t * n[0]);
-    detail::set<1>(out.torque, t * n[1]);
-    detail::set<2>(out.torque, t * n[2]);
+    // −f times the unit vector v/|v| (f/|v| alone overflows for a tiny |v|).
+    for (int i = 0; i < 3; ++i)
+      v[i] = (boost::math::isnan)(f) ? f : speed > 0 ? Real(-f * (v[i] / speed)) : Real(0);
+    detail::set<0>(out.force, v[0]);
+    detail::set<1>(out.force, v[1]);
+    detail::set<2>(out.force, v[2]);
+    // A zero component of n stays 0 where the torque overflows (∞ · 0).
+    auto along = [t](Real ni) { return ni == 0 ? Real(0) : Real(t * ni); };
+    detail::set<0>(out.torque, along(n[0]));
+    detail::set<1>(out.torque, along(n[1]));
+    detail::set<2>(out.torque, along(n[2]));
     return out;
   }
 
@@ -214,7 +219,8 @@ class contact_law {
       if (rho < vs_) scale = rho / vs_;
     }
     f = muN * F * scale;
-    t = -(spin > 0 ? Real(1) : Real(-1)) * muN * a * T * scale;
+    // (μN s)(a𝓣), not μN a 𝓣 s: μN a overflows before 𝓣 = 0 can make it 0.
+    t = -(spin > 0 ? Real(1) : Real(-1)) * (muN * scale) * (a * T);
   }
 
   void law(Real vx, Real vy, Real spin, Real a, Real N, Real mu, Real& fx, Real& fy,
@@ -226,8 +232,8 @@ class contact_law {
       fx = fy = f;
       return;
     }
-    fx = speed > 0 ? Real(-f * vx / speed) : Real(0);
-    fy = speed > 0 ? Real(-f * vy / speed) : Real(0);
+    fx = speed > 0 ? Real(-f * (vx / speed)) : Real(0);
+    fy = speed > 0 ? Real(-f * (vy / speed)) : Real(0);
   }
 
   Profile profile_;

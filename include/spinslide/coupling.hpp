@@ -25,7 +25,8 @@ namespace detail {
 // Solves g(ε) = target for a g that is monotonic on [0, ∞), given g's value
 // at 0 (its sup or inf) and the direction.  A bracket [ε/4, ε] or [ε, 4ε] is
 // grown geometrically from ε = 1 (at most ~1100 steps, the exponent range of
-// the type), then refined by TOMS 748 to full precision.
+// the type; [0, ε] below the normal numbers), then refined by TOMS 748 to
+// full precision.  A target not reached below max_value/2 is a domain error.
 template <class Real, class G, class Policy>
 Real invert_monotonic(G g, Real target, bool increasing, const char* function, const Policy& pol) {
   auto f = [&](Real e) { return g(e) - target; };
@@ -40,13 +41,19 @@ Real invert_monotonic(G g, Real target, bool increasing, const char* function, c
   } else {
     while (!below(lo) && lo > tiny) lo /= 4;
     hi = lo * 4;
+    if (!below(lo)) {  // a root among the subnormal ratios: g(0) brackets it
+      hi = lo;
+      lo = 0;
+    }
   }
   const Real flo = f(lo), fhi = f(hi);
   if (flo == 0) return lo;
   if (fhi == 0) return hi;
-  if ((flo < 0) == (fhi < 0))  // target beyond what the type can resolve
-    return boost::math::policies::raise_evaluation_error<Real>(
-        function, "Could not bracket the root for target %1%.", target, pol);
+  if ((flo < 0) == (fhi < 0))  // reached only beyond the largest ratio of the type, or never
+    return boost::math::policies::raise_domain_error<Real>(
+        function,
+        "Got target %1%, which the profile does not reach at a finite ratio of this type.", target,
+        pol);
   boost::uintmax_t max_iter = boost::math::policies::get_max_root_iterations<Policy>();
   const auto r = boost::math::tools::toms748_solve(
       f, lo, hi, flo, fhi, boost::math::tools::eps_tolerance<Real>(), max_iter, pol);
@@ -57,7 +64,9 @@ Real invert_monotonic(G g, Real target, bool increasing, const char* function, c
 
 /// ε(𝓕): the ratio at which `profile` has friction force F.
 /// F = 0 gives 0; F outside [0, 1) or NaN is a domain error (by default
-/// std::domain_error).  Round trip: profile.force(ratio_from_force(p, F)) = F.
+/// std::domain_error), and so is an F that the profile reaches only beyond the
+/// type's largest ratio, or never (the uncoupled caps jump from 0 to 1).  Round trip:
+/// profile.force(ratio_from_force(p, F)) = F.
 template <class Profile, class Real>
 Real ratio_from_force(const Profile& profile, Real F) {
   using Policy = typename Profile::policy_type;
@@ -71,7 +80,9 @@ Real ratio_from_force(const Profile& profile, Real F) {
 }
 
 /// ε(𝓣): the ratio at which `profile` has friction torque T.
-/// T = ⟨r⟩ gives 0; T outside (0, ⟨r⟩] or NaN is a domain error.
+/// T = ⟨r⟩ gives 0; T outside (0, ⟨r⟩] or NaN is a domain error, and so is a
+/// T that the profile reaches only beyond the type's largest ratio (T below
+/// about ⟨r²⟩/max_value), or never.
 template <class Profile, class Real>
 Real ratio_from_torque(const Profile& profile, Real T) {
   using Policy = typename Profile::policy_type;

@@ -20,6 +20,7 @@
 #include <boost/math/tools/toms748_solve.hpp>
 #include <boost/numeric/odeint.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -62,14 +63,27 @@ struct throw_input {
   }
 };
 
-// The checks every throw entry point makes: γ finite and > 0, speeds finite
-// and >= 0; otherwise a domain error naming `function`.
+// γ for the integration to the stop: a normal number (≥ min_value) and at
+// most max_value·epsilon (4e292 for double; a real body has γ of order 1).
+// Above, the rates γ𝓕/𝓣 and γ/𝓣 overflow during the integration; below, γ
+// has too few digits (both found by fuzz_stop_time).
+template <class Real, class Policy>
+Real checked_throw_inertia(Real gamma, const char* function, const Policy& pol) {
+  if (!(gamma >= boost::math::tools::min_value<Real>()) ||
+      !(gamma <= boost::math::tools::max_value<Real>() * boost::math::tools::epsilon<Real>()))
+    return boost::math::policies::raise_domain_error<Real>(
+        function, "Got inertia_ratio = %1%, but gamma must be in [min_value, max_value*epsilon].",
+        gamma, pol);
+  return gamma;
+}
+
+// The checks every throw entry point makes: γ as above, speeds finite and
+// >= 0; otherwise a domain error naming `function`.
 template <class Real, class Policy>
 throw_input<Real> checked_throw(const char* function, Real gamma, Real v0, Real omega0,
                                 const Policy& pol) {
   return {
-      checked_positive(gamma, function,
-                       "Got inertia_ratio = %1%, but gamma must be finite and > 0.", pol),
+      checked_throw_inertia(gamma, function, pol),
       checked_speed(v0, function, "Got v0 = %1%, but it must be finite and >= 0.", pol),
       checked_speed(omega0, function, "Got omega0 = %1%, but it must be finite and >= 0.", pol)};
 }
@@ -240,9 +254,18 @@ stop_result<typename Profile::value_type> integrate_stop(
   auto uniform = [&](Real a_v, Real a_w, Real ratio) {
     auto at = [&](Real t) {
       const Real te = t < out.time ? t : out.time;
-      const Real v = v0 - a_v * te, w = w0 - a_w * te;
-      return motion_sample<Real>{t,     v > 0 ? v : Real(0),         w > 0 ? w : Real(0),
-                                 ratio, v0 * te - a_v * te * te / 2, w0 * te - a_w * te * te / 2};
+      // The speeds lost by te; at the stop exactly v0 and ω0 (a ∞ · 0 there
+      // otherwise, for a subnormal γ).  te (v0 − Δv/2), not v0 te − a te²/2,
+      // which is ∞ − ∞ at the largest speeds (both found by fuzz_stop_time).
+      const Real dv = t < out.time ? Real(a_v * te) : v0, dw = t < out.time ? Real(a_w * te) : w0;
+      const Real v = v0 - dv, w = w0 - dw;
+      // The mean speed times te; 0 for a speed that stays 0, even where te overflows.
+      auto travelled = [te](Real x0, Real dx) {
+        const Real mean = x0 - dx / 2;
+        return mean == 0 ? Real(0) : Real(te * mean);
+      };
+      return motion_sample<Real>{t,     v > 0 ? v : Real(0), w > 0 ? w : Real(0),
+                                 ratio, travelled(v0, dv),   travelled(w0, dw)};
     };
     observe(at(0));
     observe(at(out.time));
@@ -262,7 +285,11 @@ stop_result<typename Profile::value_type> integrate_stop(
   }
   if (v0 == 0) {  // pure spinning: 𝓣(0) = ⟨r⟩, ω = ω0 − ⟨r⟩t/γ
     const Real rate = p.mean_radius() / gamma;
-    out.time = w0 / rate;
+    // γ ω0/⟨r⟩, not ω0/rate: ⟨r⟩/γ overflows for a subnormal γ (found by
+    // fuzz_stop_time); γ ω0 first where ω0/⟨r⟩ overflows.
+    const Real per_r = w0 / p.mean_radius();
+    out.time =
+        (boost::math::isfinite)(per_r) ? Real(gamma * per_r) : Real(gamma * w0 / p.mean_radius());
     out.terminal = {terminal_regime::pure_spinning, Real(0)};
     return uniform(0, rate, 0);
   }
@@ -299,8 +326,9 @@ stop_result<typename Profile::value_type> integrate_stop(
     const Real r = Real(z[0]);
     motion_sample<Real> m;
     m.time = scale * Real(z[1]);
-    m.distance = scale * scale * Real(z[2]);
-    m.angle = scale * scale * Real(z[3]);
+    // scale (scale z), not scale² z: scale² overflows where z is 0 (∞ · 0).
+    m.distance = scale * (scale * Real(z[2]));
+    m.angle = scale * (scale * Real(z[3]));
     if (!by_speed) {
       m.spin = decay;
       m.ratio = r;
@@ -351,8 +379,8 @@ stop_result<typename Profile::value_type> integrate_stop(
     // The time integrand decays at least like e^{−u}: stop when the rest is negligible.
     if (dz[1] <= 1e-18 * zc[1] && u > 1) {
       out.time = scale * (Real(zc[1]) + Real(dz[1]));
-      out.distance = scale * scale * (Real(zc[2]) + Real(dz[2]) / 2);
-      out.angle = scale * scale * (Real(zc[3]) + Real(dz[3]) / 2);
+      out.distance = scale * (scale * (Real(zc[2]) + Real(dz[2]) / 2));
+      out.angle = scale * (scale * (Real(zc[3]) + Real(dz[3]) / 2));
       const motion_sample<Real> rest{out.time, 0, 0, out.terminal.ratio, out.distance, out.angle};
       observe(rest);
       for (; next_time < times.size(); ++next_time) {
@@ -374,7 +402,9 @@ stop_result<typename Profile::value_type> integrate_stop(
 /// The throw of a body with `profile` and inertia ratio γ from dimensionless
 /// speed v0* and spin ω0* (both ≥ 0): the exact stop time, distance, angle and
 /// terminal regime.  `observer(motion_sample)` is called at every adaptive
-/// step (dimensionless), and at the stop.  Bad input is a domain error.
+/// step (dimensionless), and at the stop.  Bad input is a domain error: γ not
+/// in [min_value, max_value·epsilon] (2e-308 to 4e292 for double), or a speed
+/// that is negative or not finite.
 template <class Profile, class Real, class Observer>
 stop_result<Real> simulate_throw(const Profile& profile, Real inertia_ratio, Real v0, Real omega0,
                                  Observer observer) {
@@ -424,7 +454,8 @@ stop_result<Real> simulate_throw(const Profile& profile, Real inertia_ratio, Rea
 /// A throw in SI units: radius R [m], friction coefficient μ, gravity g
 /// [m/s²], γ = I/(mR²), speed v0 [m/s] and spin ω0 [rad/s] (both ≥ 0).
 /// Returns the stop time [s], distance [m] and angle [rad].  Bad input
-/// (R, μ, g, γ not finite and > 0; negative or NaN speeds) is a domain error.
+/// (R, μ, g not finite and > 0, γ as for simulate_throw, negative or NaN
+/// speeds) is a domain error.
 template <class Profile, class Real>
 stop_result<Real> simulate_throw_si(const Profile& profile, Real radius, Real friction_coefficient,
                                     Real gravity, Real inertia_ratio, Real v0, Real omega0) {
@@ -473,13 +504,12 @@ class tabulated_throw {
   /// The profile's floating-point type.
   using Real = typename Profile::value_type;
 
-  /// Tabulates the throws of `profile` with γ = `inertia_ratio` (finite and
-  /// > 0, otherwise a domain error); about a second, allocates.
+  /// Tabulates the throws of `profile` with γ = `inertia_ratio` (in
+  /// [min_value, max_value·epsilon], otherwise a domain error); about a
+  /// second, allocates.
   tabulated_throw(const Profile& profile, Real inertia_ratio)
-      : gamma_(
-            detail::checked_positive(inertia_ratio, "spinslide::tabulated_throw<%1%>",
-                                     "Got inertia_ratio = %1%, but gamma must be finite and > 0.",
-                                     typename Profile::policy_type())),
+      : gamma_(detail::checked_throw_inertia(inertia_ratio, "spinslide::tabulated_throw<%1%>",
+                                             typename Profile::policy_type())),
         spin_rate_(profile.mean_radius() / gamma_) {
     auto g = [&](double t) {
       const double eps = t / (1 - t);
@@ -511,7 +541,13 @@ class tabulated_throw {
     if (v0 == 0) return {w0 / spin_rate_, Real(0)};  // pure spinning, exact
     const Real s = v0 + w0;                          // ω0 (1 + ε)
     const auto g = table_(static_cast<double>(v0 / s));
-    return {s * Real(g.first), s * s * Real(g.second)};
+    // The table's error near ε = 0 is ~1e-18 absolute, so g can come out just
+    // below 0 where the distance is tiny: clamp it (the exact g is > 0).  And
+    // s (s g) rather than s² g, with g = 0 giving 0: s² overflows first, and
+    // ∞ · 0 would be NaN (both found by fuzz_stop_time).
+    const Real gd = (std::max)(Real(g.second), Real(0));
+    const Real d = gd == 0 ? Real(0) : Real(s * (s * gd));
+    return {s * Real(g.first), d};
   }
   Real gamma_, spin_rate_;
   detail::piecewise_chebyshev_pair<double, 8> table_;

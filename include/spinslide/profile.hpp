@@ -48,7 +48,7 @@ using kernel_policy =
 /// B̃ = (y/3) R_D(0, 1, y) = (E − yK)/c² (DLMF 19.25.1):
 ///   r < ε:  f_F = (2/π) E(c) = (2/π)(yK + c²B̃),   f_T = (2/π) r c B̃,
 ///   r > ε:  f_F = (2/π) c B̃,                      f_T = (2/π) r (yK + c²B̃).
-/// Every term is non-negative; at r = ε (y = 0) yK → 0 and B̃ → 1.
+/// Every term is non-negative; as r → ε (y → 0) yK → 0 and B̃ → 1.
 template <class T, class Policy>
 force_torque_result<T> ring_kernel(T r, T eps, T distance, const Policy& pol) {
   using boost::math::constants::two_div_pi;
@@ -56,8 +56,11 @@ force_torque_result<T> ring_kernel(T r, T eps, T distance, const Policy& pol) {
   const T big = inside ? eps : r;
   const T c = inside ? T(r / eps) : T(eps / r);
   const T y = (distance / big) * ((r + eps) / big);  // big² could overflow
+  // For a subnormal y (a quadrature node within about the smallest normal
+  // number of r = ε), Boost's R_F and R_D return NaN; the limits yK = 0 and
+  // B̃ = 1 are then exact to far below an ulp (the corrections are O(y ln y)).
   T yK = 0, Bt = 1;
-  if (y > 0) {
+  if (y >= boost::math::tools::min_value<T>()) {
     yK = y * boost::math::ellint_rf(T(0), y, T(1), pol);
     Bt = y / 3 * boost::math::ellint_rd(T(0), T(1), y, pol);
   }
@@ -378,19 +381,25 @@ class weighted_sum
  private:
   static std::array<Real, size> normalised(std::array<Real, size> w) {
     static const char* function = "spinslide::weighted_sum<%1%>::weighted_sum";
-    Real total = 0;
+    Real largest = 0;
     for (Real& x : w) {
       if (!(x >= 0) || !(boost::math::isfinite)(x)) {
         x = boost::math::policies::raise_domain_error<Real>(
             function, "Got weight %1%, but every weight must be finite and >= 0.", x,
             boost::math::policies::policy<>());
       }
+      if (x > largest) largest = x;
+    }
+    if (!(largest > 0))
+      largest = boost::math::policies::raise_domain_error<Real>(
+          function, "Got total weight %1%, but it must be > 0.", largest,
+          boost::math::policies::policy<>());
+    // Divided by the largest first, so that the sum cannot overflow.
+    Real total = 0;
+    for (Real& x : w) {
+      x /= largest;
       total += x;
     }
-    if (!(total > 0))
-      total = boost::math::policies::raise_domain_error<Real>(
-          function, "Got total weight %1%, but it must be > 0.", total,
-          boost::math::policies::policy<>());
     for (Real& x : w) x /= total;
     return w;
   }
@@ -418,7 +427,8 @@ weighted_sum<Real, Profiles...> make_weighted_sum(const std::array<Real, sizeof.
 
 /// Any pressure p(r) ≥ 0 on inner ≤ r ≤ 1, given as a callable Real(Real).
 /// The library normalises it by ∫ p(r) r dr (quadrature); a negative or
-/// non-finite pressure met at any quadrature node, or a zero total, is a
+/// non-finite pressure met at any quadrature node, or a total that is zero
+/// or overflows the type (relative to p at the middle of the support), is a
 /// domain error.  Moments by quadrature at construction.  p may have
 /// integrable singularities at the ends of [inner, 1].
 template <class Real, class Pressure, class Policy = boost::math::policies::policy<>>
@@ -437,21 +447,35 @@ class radial_profile
     static const char* function = "spinslide::radial_profile<%1%>::radial_profile";
     boost::math::quadrature::tanh_sinh<Real, Policy> q;
     const Real tol = pow(boost::math::tools::epsilon<Real>(), Real(0.75));
-    // ∫ p(r) r^{power+1} dr over [inner, 1]: the load (power 0) and the
+    // p and λp are the same profile: p is divided by its value at the middle
+    // of the support, so that a pressure of any size the type holds is
+    // integrated without overflow.
+    const Real half_width = (1 - inner_) / 2;  // 1 − middle, exact even where middle rounds to 1
+    const Real p_middle = pressure(1 - half_width, half_width);
+    if (p_middle > 0 && (boost::math::isfinite)(p_middle)) scale_ = p_middle;
+    // ∫ p(r) r^{power+1} dr / scale over [inner, 1]: the load (power 0) and the
     // numerators of ⟨r^power⟩.  tanh_sinh's xc > 0 is 1 − r near the rim.
+    // A sum that overflows even so (p spanning the type's whole range) is
+    // reported as a load that is not finite.
     auto moment = [&](int power) {
       auto f = [&](Real r, Real xc) {
-        const Real pr = pressure(r, xc > 0 ? xc : Real(1 - r));
+        const Real pr = pressure(r, xc > 0 ? xc : Real(1 - r)) / scale_;
         Real rp = r;
         for (int i = 0; i < power; ++i) rp *= r;
         return power == -1 ? pr : Real(rp * pr);
       };
-      return q.integrate(f, inner_, Real(1), tol);
+      try {
+        return q.integrate(f, inner_, Real(1), tol);
+      } catch (const boost::math::evaluation_error&) {
+        return std::numeric_limits<Real>::infinity();
+      }
     };
     total_ = moment(0);
     if (!(total_ > 0) || !(boost::math::isfinite)(total_))
       total_ = boost::math::policies::raise_domain_error<Real>(
-          function, "Got a total load of %1%, but the pressure must have a positive, finite total.",
+          function,
+          "Got a total load of %1% (relative to p at the middle of the support), but the "
+          "pressure must have a positive, finite total.",
           total_, Policy());
     mean_inverse_ = moment(-1) / total_;
     mean_ = moment(1) / total_;
@@ -467,14 +491,14 @@ class radial_profile
   /// ⟨r²⟩, by quadrature at construction.
   Real mean_square_radius() const { return mean_square_; }
   /// The load per unit radius, r p(r) / ∫ r p dr (integrates to 1 over [inner, 1]).
-  Real load_density(Real r) const { return r * pressure(r, 1 - r) / total_; }
+  Real load_density(Real r) const { return r * (pressure(r, 1 - r) / scale_) / total_; }
 
   /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that profile_base::force_torque() calls after
   /// its domain check and the limits ε = 0 (𝓕 = 0, 𝓣 = ⟨r⟩) and ε = ∞ (𝓕 = 1, 𝓣 = 0);
   /// call force_torque() instead.  Ring quadrature of the normalised load.
   force_torque_result<Real> general(Real eps) const {
     auto w = [this](const detail::ring_node<Real>& n) {
-      return n.r * pressure(n.r, n.one_minus_r) / total_;
+      return n.r * (pressure(n.r, n.one_minus_r) / scale_) / total_;
     };
     return detail::ring_integral(w, inner_, eps, detail::kernel_policy<Policy>());
   }
@@ -500,6 +524,7 @@ class radial_profile
 
   Pressure p_;
   Real inner_;
+  Real scale_ = 1;  // p at the middle of the support (1 if that is 0)
   Real total_ = 0, mean_ = 0, mean_inverse_ = 0, mean_square_ = 0;
 };
 

@@ -500,7 +500,7 @@ int main(int argc, char** argv) {
   run_stats stats;
   const std::vector<values> vals = run(ps, jobs, "table", &stats);
   auto value_of = [&](std::size_t p, double e) -> const values& {
-    const std::size_t k = std::find(grid.begin(), grid.end(), e) - grid.begin();
+    const auto k = static_cast<std::size_t>(std::find(grid.begin(), grid.end(), e) - grid.begin());
     return vals[p * grid.size() + k];
   };
 
