@@ -81,6 +81,16 @@ TEST(FuzzFindings, EngineModelsWithExtremeParameters) {
   EXPECT_DOUBLE_EQ(p.force(1e300), 1.0 / 3);  // ε/(ε + 2/<1/r>) = 1e300/3e300
 }
 
+// fuzz_profiles (sanitize preset, second run): in the Padé form 2ε overflowed
+// where <r>/<r²> underflows to 0 (∞ · 0 = NaN torque).
+TEST(FuzzFindings, PadeAtTheLargestRatio) {
+  const pade_approximation<double> big(7.56851905622497924774e-103, max_d, max_d);
+  const auto ft = big.force_torque(max_d);
+  // <r>/(1 + 2ε<r>/<r²>) with ε<r>/<r²> ~ 1e-103: <r>.
+  EXPECT_DOUBLE_EQ(ft.torque, 7.56851905622497924774e-103);
+  EXPECT_EQ(ft.force, 1.0);
+}
+
 // fuzz_coupling: a force target among the subnormal ratios could not be
 // bracketed (evaluation_error).  𝓕 ≈ ε⟨1/r⟩/2 there.
 TEST(FuzzFindings, CouplingInverseAmongSubnormals) {
@@ -145,6 +155,17 @@ TEST(FuzzFindings, ContactLawAtTheEdgesOfDouble) {
       law(std::array<double, 2>{3.4e-13, 0}, 0.0, max_d, max_d, 0.156875143087110618945);
   EXPECT_EQ(r2.torque, 0);
   EXPECT_TRUE(std::isfinite(r2.force[0]));
+}
+
+// fuzz_contact (sanitize preset): a NaN velocity component beside a zero one
+// gave |v| = 0 (std::max drops the NaN), so no domain error.
+TEST(FuzzFindings, ContactLawNaNVelocityComponent) {
+  const contact_law<> law;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(law(std::array<double, 2>{0, nan}, 0.0, 2.0, 0.5, 2.0 / 3), std::domain_error);
+  EXPECT_THROW(law(std::array<double, 3>{0, nan, 0}, std::array<double, 3>{0, 0, 0},
+                   std::array<double, 3>{0, 0, 1}, 2.0, 0.5, 2.0 / 3),
+               std::domain_error);
 }
 
 }  // namespace

@@ -114,8 +114,11 @@ class pade_approximation
   /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that force_torque() calls after its domain
   /// check and the limits ε = 0 and ε = ∞; call force_torque() instead.
   force_torque_result<Real> general(Real eps) const {
-    // Written so that no intermediate overflows for any moments and ε.
-    return {1 / (1 + (2 / inv_) / eps), r_ / (1 + 2 * eps * (r_ / sq_))};
+    // Written so that no intermediate overflows for any moments (each ≥ the
+    // smallest normal value, so 2/⟨1/r⟩ is finite) and ε: 2ε·(⟨r⟩/⟨r²⟩), not
+    // (2ε)(⟨r⟩/⟨r²⟩), which is ∞ · 0 where the ratio underflows (found by fuzz_profiles).
+    const Real x = (2 / inv_) / eps;
+    return {1 / (1 + x), r_ / (1 + 2 * (eps * (r_ / sq_)))};
   }
 
  private:

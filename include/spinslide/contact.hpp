@@ -166,6 +166,8 @@ class contact_law {
   static Real norm(Real x, Real y, Real z) {
     BOOST_MATH_STD_USING
     const Real s2 = x * x + y * y + z * z;
+    // NaN only from a NaN component (std::max would drop it; found by fuzz_contact).
+    if ((boost::math::isnan)(s2)) return s2;
     if (s2 > boost::math::tools::min_value<Real>() && s2 < boost::math::tools::max_value<Real>())
       return sqrt(s2);
     const Real m = (std::max)({fabs(x), fabs(y), fabs(z)});
