@@ -8,7 +8,8 @@
 // for the continuous profiles, the round trip holds: 𝓕(ε(F)) = F and
 // 𝓣(ε(T)) = T to 1e-9 relative.  A target the type cannot reach at a finite
 // ratio (T below 𝓣 at the largest ratios, a torque the uncoupled caps never
-// take) is a domain error too, so there such a T may give either.
+// take) is a domain error too, so there such a T may give either; a force in
+// (0, 1), which the uncoupled caps jump over, must be one.
 
 #include "zoo.hpp"
 
@@ -33,7 +34,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double T = in.byte() % 2 ? in.unit<double>() * top : in.real<double>();
     describe("F", F);
     describe("T", T);
-    const validity vF = valid_if(F >= 0 && F < 1);
+    validity vF = valid_if(F >= 0 && F < 1);
+    if (!continuous && F > 0) vF = validity::invalid;
     // Beyond ~1e300 the ratio, and so a tiny T, leaves what double resolves.
     validity vT = valid_if(T > 0 && T <= top);
     if (vT == validity::valid && (T < 1e-290 * top || !continuous)) vT = validity::ambiguous;

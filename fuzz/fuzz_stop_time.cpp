@@ -9,6 +9,7 @@
 // ≥ 0, not NaN, and at least each one-sided bound: t* ≥ v0 (𝓕 ≤ 1) and
 // t* ≥ γω0/⟨r⟩ (𝓣 ≤ ⟨r⟩), to 1e-9; it is finite whenever those bounds and
 // the inputs are moderate (|·| ≤ 1e100), where no result can overflow.
+// Distance and angle within their bounds (check_path), for any ratio v0/ω0.
 
 #include "zoo.hpp"
 
@@ -29,6 +30,30 @@ void check_time(double t, double v0, double w0, double gamma, double top, const 
   const double spin_bound = gamma * w0 / top;
   if (std::isfinite(spin_bound))
     check(t >= spin_bound * (1 - 1e-9) - 1e-300, call, "t* < gamma omega0/<r>, but T <= <r>");
+}
+
+// Distance and angle: not NaN, and within the bounds that 0 ≤ 𝓕 ≤ 1 and
+// 0 ≤ 𝓣 ≤ ⟨r⟩ give: v0²/2 ≤ s ≤ v0 t* and γω0²/(2⟨r⟩) ≤ θ ≤ ω0 t* (to 1e-9,
+// in long double, where no bound overflows; ∞ where the true value overflows).
+void check_path(double s, double theta, double t, double v0, double w0, double gamma, double top,
+                const char* call) {
+  check(!std::isnan(s) && s >= 0, call, "distance NaN or < 0");
+  check(!std::isnan(theta) && theta >= 0, call, "angle NaN or < 0");
+  const long double lo = 1 - 1e-9L, hi = 1 + 1e-9L, floor = 1e-300L;
+  const long double v = v0, w = w0, tt = t;
+  if (v0 == 0) check(s == 0, call, "distance != 0 without sliding");
+  if (w0 == 0) check(theta == 0, call, "angle != 0 without spin");
+  if (std::isfinite(s)) {
+    check(s >= v * v / 2 * lo - floor, call, "distance < v0^2/2, but F <= 1");
+    if (std::isfinite(t))
+      check(s <= v * tt * hi + floor, call, "distance > v0 t*, but the speed is <= v0");
+  }
+  if (std::isfinite(theta)) {
+    check(theta >= gamma * (w * w / (2 * static_cast<long double>(top))) * lo - floor, call,
+          "angle < gamma omega0^2/(2<r>), but T <= <r>");
+    if (std::isfinite(t))
+      check(theta <= w * tt * hi + floor, call, "angle > omega0 t*, but the spin is <= omega0");
+  }
 }
 
 const spinslide::tabulated_throw<spinslide::uniform_disk<double>>& shared_throw() {
@@ -68,25 +93,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const double gamma_max = std::numeric_limits<double>::max() * 0x1p-52;  // max·epsilon
         const validity v = valid_if(speeds_ok && gamma >= std::numeric_limits<double>::min() &&
                                     gamma <= gamma_max);
-        const double ratio = v0 / w0;
-        const bool extreme = !(v0 == 0 || w0 == 0 || (ratio < 1e100 && ratio > 1e-100));
-        // Known limit (docs/reliability.md, open): the state is scaled by
-        // ω0 (or v0), so for ε0 = v0/ω0 beyond ~1e100 or below 1e-100 the
-        // scaled state over- or underflows.  There the fuzzer found a wrong
-        // stop time (t* = v0 where it is γω0/<r>), NaN distances and
-        // angles, "no stop found" (evaluation_error) and a quadrature
-        // profile taking 67 s; so the harness only checks the domain errors.
-        if (extreme && v == validity::valid) return;
         expect(v, "simulate_throw", [&] {
           const auto r = spinslide::simulate_throw(p, gamma, v0, w0);
           check_time(r.time, v0, w0, gamma, p.mean_radius(), "simulate_throw");
-          // Distances and angles grow like v0², γω0²: checked where they cannot
-          // overflow (docs/reliability.md, known and open).
-          if (v0 <= 1e100 && w0 <= 1e100 && gamma <= 1e100) {
-            check(!std::isnan(r.distance) && r.distance >= 0, "simulate_throw",
-                  "distance NaN or < 0");
-            check(!std::isnan(r.angle) && r.angle >= 0, "simulate_throw", "angle NaN or < 0");
-          }
+          check_path(r.distance, r.angle, r.time, v0, w0, gamma, p.mean_radius(), "simulate_throw");
           check(r.time == spinslide::stop_time(p, gamma, v0, w0), "stop_time(profile, ...)",
                 "differs from simulate_throw(...).time");
         });

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -102,8 +103,20 @@ TEST(FuzzFindings, CouplingInverseAmongSubnormals) {
   EXPECT_NEAR(e, linear, 0.1 * linear);
   // A torque reached only beyond the largest double ratio: a domain error now.
   EXPECT_THROW(ratio_from_torque(uniform_disk<double>(), 1e-320), std::domain_error);
-  // The uncoupled caps take no force in (0, 1): the jump at ε = 0.
-  EXPECT_LT(ratio_from_force(uncoupled_caps<double>(), 0.5), 1e-300);
+  // The uncoupled caps take no force in (0, 1): the jump at ε = 0 is a
+  // domain error (as documented; it returned ~0 until the campaign).
+  EXPECT_THROW(ratio_from_force(uncoupled_caps<double>(), 0.5), std::domain_error);
+}
+
+// fuzz_coupling (the campaign): a thin annulus's quadrature 𝓕 levels off at
+// 1 − 2⁻⁵², so the valid target 1 − 2⁻⁵³ was "not reached" (domain error).
+// Expected: a ratio whose 𝓕 is the target to 4 ulp.
+TEST(FuzzFindings, CouplingInverseAtTheTopOfTheForce) {
+  const annulus<double> thin(0.999999632134875304779);
+  const double target = 0.999999999999999888978;
+  const double e = ratio_from_force(thin, target);
+  EXPECT_NEAR(thin.force(e), target, 4 * std::numeric_limits<double>::epsilon());
+  EXPECT_GT(e, 1e6);  // 1 − 𝓕 ≈ 1/(4ε²) ≥ 2.5e-13 below
 }
 
 // fuzz_coupling: the tabulated Hertz profile gave 𝓕 = 1 + 2e-15 at ε = 4.4e11.
@@ -141,6 +154,101 @@ TEST(FuzzFindings, ThrowsAtTheEdgesOfDouble) {
   EXPECT_NO_THROW(stop_time(ring<double>(), 1e290, 0.5, 0.5));
 }
 
+// fuzz_stop_time: throws whose ratio ε0 = v0/ω0 is beyond ~1e±100, or with γ
+// near the ends of its domain, gave wrong stop times, NaN distances and angles
+// or "no stop found" (the scaled state over- or underflowed, and the ratio's
+// equation was stiff).  Expected: the limits where one motion is negligible.
+// While v ≫ ω, 𝓣 ≈ ⟨r²⟩/(2ε), so ω = ω0 (v/v0)^k with k = ⟨r²⟩/(2γ) and
+// θ = ω0 v0/(1 + k), t = v0, s = v0²/2.  While ω ≫ v, 𝓕 ≈ ε⟨1/r⟩/2, so
+// v = v0 (ω/ω0)^m with m = γ⟨1/r⟩/(2⟨r⟩) and s = v0 ω0 γ/(⟨r⟩(1 + m)),
+// t = γω0/⟨r⟩, θ = ω0 t/2.  (Disk: ⟨r⟩ = 2/3, ⟨1/r⟩ = 2, ⟨r²⟩ = 1/2.)
+TEST(FuzzFindings, ThrowsAtExtremeRatiosAndInertia) {
+  const uniform_disk<double> disk;
+  const double rel = 1e-12;
+  {  // ε0 = 1e350: the quotient overflows
+    const auto r = simulate_throw(disk, 0.5, 1e150, 1e-200);
+    EXPECT_NEAR(r.time / 1e150, 1, rel);
+    EXPECT_NEAR(r.distance / 5e299, 1, rel);
+    EXPECT_NEAR(r.angle / (1e-50 / (1 + 0.5)), 1, 1e-11);
+  }
+  {  // ε0 = 1e-350: the quotient underflows
+    const auto r = simulate_throw(disk, 0.5, 1e-200, 1e150);
+    EXPECT_NEAR(r.time / 0.75e150, 1, rel);
+    EXPECT_NEAR(r.angle / (1e150 * 0.75e150 / 2), 1, rel);
+    EXPECT_NEAR(r.distance / (1e-50 * 0.5 / ((2.0 / 3) * 1.75)), 1, 1e-11);
+  }
+  {  // the fuzzer's case: t* was v0 instead of γω0/⟨r⟩ = 4.2e-14
+    const double gamma = 5.6e-14;
+    for (const double v0 : {2e-308, 2e-200, 2e-50}) {
+      const auto r = simulate_throw(disk, gamma, v0, 0.5);
+      EXPECT_NEAR(r.time / (gamma * 0.5 / (2.0 / 3)), 1, rel) << v0;
+      EXPECT_NEAR(r.angle / (gamma * 0.25 / (4.0 / 3)), 1, rel) << v0;
+    }
+  }
+  {  // the largest speed and the smallest spin: θ = 4.9e-324 · 1.7e308 · 2/3
+    const double v0 = 1.7e308, w0 = std::numeric_limits<double>::denorm_min();
+    const auto r = simulate_throw(disk, 0.5, v0, w0);
+    EXPECT_NEAR(r.time / v0, 1, rel);
+    EXPECT_NEAR(r.angle / (w0 * v0 / 1.5), 1, 1e-11);
+  }
+  {  // γ = 1e-300: the spin dies at once, then pure sliding
+    const auto r = simulate_throw(disk, 1e-300, 1.0, 1.0);
+    EXPECT_NEAR(r.time, 1, rel);
+    EXPECT_NEAR(r.distance, 0.5, rel);
+  }
+  {  // γ = 1e290: the spin hardly slows while the body slides
+    const auto r = simulate_throw(disk, 1e290, 1.0, 1.0);
+    EXPECT_NEAR(r.time / 1.5e290, 1, rel);
+    EXPECT_NEAR(r.angle / (1.5e290 / 2), 1, rel);
+  }
+  {  // at the edge of the ring's window (γ = <r²>/2) the flow creeps to ∞ like
+     // 1/ε²: "no stop found".  ω0 = max, v0 = min: t* = γω0/<r> (<r> = 1)
+    const auto r =
+        simulate_throw(ring<double>(), 0.5, std::numeric_limits<double>::denorm_min(), max_d);
+    EXPECT_NEAR(r.time / (0.5 * max_d), 1, rel);
+  }
+  {  // γ = 1.3e256 and subnormal speeds: the spin outlasts the slide by 1e241,
+     // but the stop was found when v underflowed (t* = v0)
+    const tabulated_profile<double> hz{hertz<double>()};
+    const double gamma = 1.31110559619016773427e+256,
+                 w0 = std::numeric_limits<double>::denorm_min();
+    const auto r = simulate_throw(hz, gamma, 5.56268464626800345773e-309, w0);
+    EXPECT_NEAR(r.time / (gamma * w0 / hz.mean_radius()), 1, rel);
+  }
+  {  // pure spinning from a subnormal ω0 (v0 = −0): ω0/<r> rounded away 20%
+    const boussinesq<double> b;
+    const double gamma = 1.91079076817831732741e+101,
+                 w0 = std::numeric_limits<double>::denorm_min();
+    const long double expected = static_cast<long double>(gamma) * w0 / b.mean_radius();
+    EXPECT_NEAR(simulate_throw(b, gamma, -0.0, w0).time / expected, 1, 1e-15);
+  }
+  {  // uncoupled caps (found by the random driver in the README build): with
+     // 𝓕 = 1 and 𝓣 = τ both motions decelerate uniformly and independently,
+     // t* = max(v0, γω0/τ), s = v0²/2, θ = γω0²/(2τ); ε0 = 7.7e35 gave
+     // "no stop found" (the log of a ratio that reaches 0 at a finite time)
+    struct caps_throw {
+      double tau, gamma, v0, w0;
+    };
+    for (const caps_throw& c :
+         {caps_throw{8.7843193121122449291e-10, 0.406209994126658979763, 1.6991849557249753088e20,
+                     2.22e-16},
+          caps_throw{0.467046984433948875193, 0.491038236470873357131, 7.46581792819842669392e+147,
+                     5.38232671090365509445e-155},
+          caps_throw{2.0 / 3, 0.5, 1.0, 1.0}, caps_throw{2.0 / 3, 0.5, 1.0, 3.0}}) {
+      const auto r = simulate_throw(uncoupled_caps<double>(c.tau), c.gamma, c.v0, c.w0);
+      EXPECT_NEAR(r.time / std::max(c.v0, c.gamma * c.w0 / c.tau), 1, rel) << c.v0;
+      EXPECT_NEAR(r.distance / (c.v0 * c.v0 / 2), 1, rel) << c.v0;
+      EXPECT_NEAR(r.angle / (c.gamma * c.w0 * c.w0 / (2 * c.tau)), 1, rel) << c.v0;
+    }
+  }
+  {  // float: "no stop found" from ε0 = 1e60 (the rounding of a float
+     // right-hand side forced 1e-7 steps)
+    const auto r = simulate_throw(uniform_disk<float>(), 0.5f, 1e30f, 1e-30f);
+    EXPECT_NEAR(r.time / 1e30f, 1, 1e-5);
+    EXPECT_NEAR(r.angle / (1 / 1.5f), 1, 1e-5);
+  }
+}
+
 // fuzz_contact: f/|v| overflowed for a tiny sliding speed (3-D), and μN a
 // overflowed times 𝓣 = 0 (planar, no spin).
 TEST(FuzzFindings, ContactLawAtTheEdgesOfDouble) {
@@ -155,6 +263,73 @@ TEST(FuzzFindings, ContactLawAtTheEdgesOfDouble) {
       law(std::array<double, 2>{3.4e-13, 0}, 0.0, max_d, max_d, 0.156875143087110618945);
   EXPECT_EQ(r2.torque, 0);
   EXPECT_TRUE(std::isfinite(r2.force[0]));
+}
+
+// fuzz_terminal: a Padé form's 𝓣 underflowed to 0 at ε = 1e300, so the flow
+// g = 1 − γ𝓕/(ε𝓣) was −∞ there, a false zero was bracketed and terminal_motion
+// evaluated 𝓕 at a NaN ratio.  Expected from the moments alone:
+// g(0) = 1 − γ<1/r>/(2<r>) > 0 and g(∞) = 1 − 2γ/<r²> > 0, so ε → ∞.
+TEST(FuzzFindings, TerminalMotionOfAPadeFormWithExtremeMoments) {
+  const pade_approximation<double> p(2922, 765, 1.7e-9);
+  const double gamma = 2.2e-16;
+  ASSERT_GT(1 - gamma * 765 / (2 * 2922.0), 0);
+  ASSERT_GT(1 - 2 * gamma / 1.7e-9, 0);
+  const auto t = terminal_motion(p, gamma, 1e132);
+  EXPECT_EQ(t.regime, terminal_regime::pure_sliding);
+  EXPECT_EQ(terminal_motion(p, gamma).regime, terminal_regime::pure_sliding);
+}
+
+// fuzz_contact (the 1e7-input campaign): μN s underflowed to 0 where a𝓣
+// overflows, a NaN torque.  Expected: the same law at a/c and ω c, times c
+// (the torque is ∝ a at fixed aω; c = 2^600 keeps every product normal).
+TEST(FuzzFindings, ContactTorqueOfUnderflowTimesOverflow) {
+  const double vs = 8.98846567431157854073e+307, a = 8.98846567431157854073e+307;
+  const contact_law<elliptic_limit_surface<double>> law(
+      elliptic_limit_surface<double>(174827.100707625766518), vs);
+  const std::array<double, 2> v{7.82232238000716571555e-24, 1.1956970914634861867e-258};
+  const double spin = 2.71736105212685599297e-322, N = 2.22044604925031308085e-16,
+               mu = 0.0444809783472058864473;
+  const double c = std::ldexp(1.0, 600);
+  const auto r = law(v, spin, a, N, mu);
+  const auto scaled = law(v, spin * c, a / c, N, mu);
+  ASSERT_TRUE(std::isfinite(r.torque));
+  EXPECT_LT(r.torque, 0);
+  EXPECT_NEAR(r.torque / (scaled.torque * c), 1, 1e-14);
+}
+
+// fuzz_contact (the 1e7-input campaign): v·n overflowed for velocity
+// components near the largest value, so a finite tangential velocity was
+// reported as an infinite speed (domain error).  Expected: at these speeds
+// ε is beyond any double either way, so the result is that of v/1024.
+TEST(FuzzFindings, ContactLaw3DProjectionNearTheLargestValue) {
+  const contact_law<uncoupled_caps<double>> law(uncoupled_caps<double>(36827858.5685185343027),
+                                                1e-6);
+  const double th = 0.88733783351099559944, ph = 0.000766989708598497842498;
+  const std::array<double, 3> n{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph),
+                                std::cos(th)};
+  const std::array<double, 3> w{1.00000000000000022204, max_d, 0.666666666666666629659};
+  const double a = 6.36050773210021198955e-300, N = 0.0549016181728579980015, mu = max_d;
+  const std::array<double, 3> v{max_d, -6.26433498638888716604e+194, max_d};
+  const auto r = law(v, w, n, a, N, mu);
+  const auto scaled =
+      law(std::array<double, 3>{v[0] / 1024, v[1] / 1024, v[2] / 1024}, w, n, a, N, mu);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(r.force[i], scaled.force[i], 1e-14 * mu * N) << i;
+    EXPECT_EQ(r.torque[i], scaled.torque[i]) << i;
+  }
+}
+
+// fuzz_contact (the campaign): with subnormal velocity components v/|v| was
+// a quotient of subnormals and |F| exceeded μN by 0.3%.  v = (20, 61) times
+// the smallest subnormal: the direction is (20, 61)/√(20² + 61²).
+TEST(FuzzFindings, ContactDirectionOfASubnormalVelocity) {
+  const double d = std::numeric_limits<double>::denorm_min();
+  const double N = 1.16923918684000595184e-228, mu = 0.685007878938989844819;
+  const contact_law<boussinesq<double>> law(boussinesq<double>(), 0.0);
+  const auto r = law(std::array<double, 2>{20 * d, 61 * d}, 0.0, 1.31672823561030010652e-38, N, mu);
+  const double len = std::hypot(20.0, 61.0);
+  EXPECT_NEAR(r.force[0] / (mu * N), -20 / len, 1e-15);
+  EXPECT_NEAR(r.force[1] / (mu * N), -61 / len, 1e-15);
 }
 
 // fuzz_contact (sanitize preset): a NaN velocity component beside a zero one

@@ -16,6 +16,7 @@
 #ifndef SPINSLIDE_CONTACT_HPP
 #define SPINSLIDE_CONTACT_HPP
 
+#include <spinslide/detail/product.hpp>
 #include <spinslide/profile.hpp>
 
 #include <algorithm>
@@ -134,22 +135,21 @@ class contact_law {
     const Real n[3] = {static_cast<Real>(detail::get<0>(normal)),
                        static_cast<Real>(detail::get<1>(normal)),
                        static_cast<Real>(detail::get<2>(normal))};
+    const Real w = dot({static_cast<Real>(detail::get<0>(angular_velocity)),
+                        static_cast<Real>(detail::get<1>(angular_velocity)),
+                        static_cast<Real>(detail::get<2>(angular_velocity))},
+                       n);
     Real v[3] = {static_cast<Real>(detail::get<0>(velocity)),
                  static_cast<Real>(detail::get<1>(velocity)),
                  static_cast<Real>(detail::get<2>(velocity))};
-    const Real w = static_cast<Real>(detail::get<0>(angular_velocity)) * n[0] +
-                   static_cast<Real>(detail::get<1>(angular_velocity)) * n[1] +
-                   static_cast<Real>(detail::get<2>(angular_velocity)) * n[2];
-    const Real vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
-    for (int i = 0; i < 3; ++i) v[i] -= vn * n[i];  // tangential part: the force is along −v
-    const Real speed = norm(v[0], v[1], v[2]);
+    const Real speed = tangential(v, n);  // the force is along −v_t
     Real f, t;
     magnitudes(speed, w, radius, normal_force, friction_coefficient, f, t);
     spatial_friction<Vec3> out{Vec3{}, Vec3{}};
     // NaN f: a domain error, through a policy that does not throw.
     // −f times the unit vector v/|v| (f/|v| alone overflows for a tiny |v|).
-    for (int i = 0; i < 3; ++i)
-      v[i] = (boost::math::isnan)(f) ? f : speed > 0 ? Real(-f * (v[i] / speed)) : Real(0);
+    direction(v, speed);
+    for (int i = 0; i < 3; ++i) v[i] = (boost::math::isnan)(f) ? f : Real(-f * v[i]);
     detail::set<0>(out.force, v[0]);
     detail::set<1>(out.force, v[1]);
     detail::set<2>(out.force, v[2]);
@@ -162,6 +162,58 @@ class contact_law {
   }
 
  private:
+  // a·n for a unit n, without overflow where the result is finite: if a
+  // partial sum overflows, the same in units of a's largest component.
+  static Real dot(const Real (&a)[3], const Real (&n)[3]) {
+    BOOST_MATH_STD_USING
+    const Real d = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
+    if ((boost::math::isfinite)(d) || !(boost::math::isfinite)(a[0]) ||
+        !(boost::math::isfinite)(a[1]) || !(boost::math::isfinite)(a[2]))
+      return d;
+    const Real m = (std::max)({fabs(a[0]), fabs(a[1]), fabs(a[2])});
+    return m * ((a[0] / m) * n[0] + (a[1] / m) * n[1] + (a[2] / m) * n[2]);
+  }
+
+  // v/|v| in place (0 for v = 0).  For a |v| near the subnormal range (below
+  // min/epsilon), in units of v's largest component, where the quotients of
+  // subnormals would make |v/|v|| exceed 1 by a percent (found by fuzz_contact).
+  static void direction(Real (&v)[3], Real speed) {
+    BOOST_MATH_STD_USING
+    if (!(speed > 0)) {
+      v[0] = v[1] = v[2] = 0;
+      return;
+    }
+    if (speed >= boost::math::tools::min_value<Real>() / boost::math::tools::epsilon<Real>()) {
+      for (Real& vi : v) vi /= speed;
+      return;
+    }
+    const Real m = (std::max)({fabs(v[0]), fabs(v[1]), fabs(v[2])});
+    for (Real& vi : v) vi /= m;
+    const Real length = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (Real& vi : v) vi /= length;
+  }
+
+  // The tangential part v − (v·n)n in place, and its length.  Where v·n
+  // overflows for finite v (components near the largest value; found by
+  // fuzz_contact), in units of v's largest component: then only a tangential
+  // part that itself exceeds the largest value is ∞.
+  static Real tangential(Real (&v)[3], const Real (&n)[3]) {
+    BOOST_MATH_STD_USING
+    Real scale = 1;
+    if (!(boost::math::isfinite)(v[0] * n[0] + v[1] * n[1] + v[2] * n[2]) &&
+        (boost::math::isfinite)(v[0]) && (boost::math::isfinite)(v[1]) &&
+        (boost::math::isfinite)(v[2])) {
+      scale = (std::max)({fabs(v[0]), fabs(v[1]), fabs(v[2])});
+      for (Real& vi : v) vi /= scale;
+    }
+    const Real vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+    for (int i = 0; i < 3; ++i) v[i] -= vn * n[i];
+    const Real length = norm(v[0], v[1], v[2]);
+    if (scale == 1) return length;
+    for (Real& vi : v) vi *= scale;
+    return scale * length;
+  }
+
   // √(x² + y² + z²) without overflow or underflow for any finite input.
   static Real norm(Real x, Real y, Real z) {
     BOOST_MATH_STD_USING
@@ -220,9 +272,11 @@ class contact_law {
       const Real rho = norm(speed, rim, Real(0));
       if (rho < vs_) scale = rho / vs_;
     }
-    f = muN * F * scale;
-    // (μN s)(a𝓣), not μN a 𝓣 s: μN a overflows before 𝓣 = 0 can make it 0.
-    t = -(spin > 0 ? Real(1) : Real(-1)) * (muN * scale) * (a * T);
+    // Products without spurious over- or underflow (found by fuzz_contact):
+    // μN a overflows where 𝓣 = 0 would make the torque 0, and μN s underflows
+    // to 0 where a𝓣 overflows (∞ · 0).
+    f = detail::product(muN, F, scale);
+    t = -(spin > 0 ? Real(1) : Real(-1)) * detail::product(muN, scale, a, T);
   }
 
   void law(Real vx, Real vy, Real spin, Real a, Real N, Real mu, Real& fx, Real& fy,
@@ -234,8 +288,10 @@ class contact_law {
       fx = fy = f;
       return;
     }
-    fx = speed > 0 ? Real(-f * (vx / speed)) : Real(0);
-    fy = speed > 0 ? Real(-f * (vy / speed)) : Real(0);
+    Real u[3] = {vx, vy, 0};
+    direction(u, speed);
+    fx = -f * u[0];
+    fy = -f * u[1];
   }
 
   Profile profile_;

@@ -18,6 +18,9 @@
 #include <boost/math/tools/roots.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 
+#include <cmath>
+#include <limits>
+
 namespace spinslide {
 
 namespace detail {
@@ -49,15 +52,39 @@ Real invert_monotonic(G g, Real target, bool increasing, const char* function, c
   const Real flo = f(lo), fhi = f(hi);
   if (flo == 0) return lo;
   if (fhi == 0) return hi;
-  if ((flo < 0) == (fhi < 0))  // reached only beyond the largest ratio of the type, or never
-    return boost::math::policies::raise_domain_error<Real>(
-        function,
-        "Got target %1%, which the profile does not reach at a finite ratio of this type.", target,
-        pol);
+  if ((flo < 0) == (fhi < 0)) {  // reached only beyond the largest ratio of the type, or never
+    // Unless the target is within 4 ulp of g at the far end: a quadrature
+    // profile's 𝓕 may level off an ulp below 1 (found by fuzz_coupling: a
+    // thin annulus, 𝓕 ≤ 1 − 2⁻⁵² where the target was 1 − 2⁻⁵³).  Then the
+    // answer is where g first reaches that level, by bisection in ln ε
+    // between 1 (short of it) and the far end.
+    BOOST_MATH_STD_USING
+    const Real end = (flo < 0) == increasing ? hi : lo, level = g(end);
+    if (!(fabs(level - target) <= 4 * boost::math::tools::epsilon<Real>() * fabs(target)) ||
+        g(Real(1)) == level)
+      return boost::math::policies::raise_domain_error<Real>(
+          function,
+          "Got target %1%, which the profile does not reach at a finite ratio of this type.",
+          target, pol);
+    Real a = 1, b = end;  // g(a) ≠ level, g(b) = level
+    for (int i = 0; i < 200 && fabs(b / a - 1) > 4 * boost::math::tools::epsilon<Real>(); ++i) {
+      const Real m = exp((log(a) + log(b)) / 2);
+      (g(m) == level ? b : a) = m;
+    }
+    return b;
+  }
   boost::uintmax_t max_iter = boost::math::policies::get_max_root_iterations<Policy>();
   const auto r = boost::math::tools::toms748_solve(
       f, lo, hi, flo, fhi, boost::math::tools::eps_tolerance<Real>(), max_iter, pol);
-  return (r.first + r.second) / 2;
+  const Real root = (r.first + r.second) / 2;
+  // g may jump over the target (the uncoupled caps' 𝓕 jumps from 0 to 1):
+  // then the bracket closes on the jump, and no ratio gives the target.
+  BOOST_MATH_STD_USING
+  if (!(fabs(g(root) - target) <=
+        Real(1e-6) * fabs(target) + 16 * std::numeric_limits<Real>::denorm_min()))
+    return boost::math::policies::raise_domain_error<Real>(
+        function, "Got target %1%, which the profile jumps over: no ratio gives it.", target, pol);
+  return root;
 }
 
 }  // namespace detail

@@ -67,12 +67,41 @@ Real checked_inertia_ratio(Real gamma, const char* function, const Policy& pol) 
   return gamma;
 }
 
+// The terms of the flow at ε ∈ [0, ∞]: 𝓕/ε, 𝓣, 𝓕 and ε𝓣, with the limits
+// 𝓕/ε → ⟨1/r⟩/2 (ε → 0) and ε𝓣 → ⟨r²⟩/2 (ε → ∞) wherever 𝓕 or 𝓣 is not a
+// normal number: they under- or overflow only there, and the limits are
+// then exact to the type's precision (found by fuzz_terminal: a Padé form's
+// 𝓣 underflowed to 0 at ε = 1e300, giving g = −∞).
+template <class Real>
+struct flow_terms {
+  Real force_over_ratio;  ///< 𝓕/ε
+  Real torque;            ///< 𝓣
+  Real force;             ///< 𝓕
+  Real ratio_torque;      ///< ε𝓣
+};
+
+template <class Profile, class Real>
+flow_terms<Real> flow_terms_at(const Profile& p, Real eps) {
+  const Real small = boost::math::tools::min_value<Real>();
+  const Real inv_half = p.mean_inverse_radius() / 2, sq_half = p.mean_square_radius() / 2;
+  if (eps == 0) return {inv_half, p.mean_radius(), Real(0), Real(0)};
+  if ((boost::math::isinf)(eps)) return {Real(0), Real(0), Real(1), sq_half};
+  const auto ft = p.force_torque(eps);
+  return {ft.force >= small ? Real(ft.force / eps) : inv_half, ft.torque, ft.force,
+          ft.torque >= small ? Real(eps * ft.torque) : sq_half};
+}
+
 // g(ε) = f(ε)/ε = 1 − γ𝓕/(ε𝓣): f's sign without f's factor ε, and finite
-// at both ends: g(0) = 1 − γ⟨1/r⟩/(2⟨r⟩), g(∞) = 1 − 2γ/⟨r²⟩.
+// at both ends: g(0) = 1 − γ⟨1/r⟩/(2⟨r⟩), g(∞) = 1 − 2γ/⟨r²⟩.  A pull
+// γ𝓕/(ε𝓣) beyond the type's range gives −max_value, not −∞.
 template <class Profile, class Real>
 Real flow_over_ratio(const Profile& p, Real eps, Real gamma) {
-  const auto ft = p.force_torque(eps);
-  return 1 - gamma * (ft.force / eps) / ft.torque;
+  const auto t = flow_terms_at(p, eps);
+  const Real pull = t.torque >= boost::math::tools::min_value<Real>()
+                        ? Real(gamma * t.force_over_ratio / t.torque)
+                        : Real(gamma * t.force / t.ratio_torque);
+  const Real g = 1 - pull;
+  return g >= -boost::math::tools::max_value<Real>() ? g : -boost::math::tools::max_value<Real>();
 }
 
 // Which ends of (0, ∞) attract the flow.  At an exact edge of the window
