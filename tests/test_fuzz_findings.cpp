@@ -117,6 +117,11 @@ TEST(FuzzFindings, CouplingInverseAtTheTopOfTheForce) {
   const double e = ratio_from_force(thin, target);
   EXPECT_NEAR(thin.force(e), target, 4 * std::numeric_limits<double>::epsilon());
   EXPECT_GT(e, 1e6);  // 1 − 𝓕 ≈ 1/(4ε²) ≥ 2.5e-13 below
+  // A subnormal target of a steep 𝓕 ≈ ε/τ (τ = 0.017: 57 subnormals per
+  // step of ε) is not a jump: ε ≈ τ F to the subnormals' resolution.
+  const elliptic_limit_surface<double> cone(0.0173969741280550205254);
+  const double tiny = 3.75489890839347373574e-322;
+  EXPECT_NEAR(ratio_from_force(cone, tiny), 0.0173969741280550205254 * tiny, 2e-323);
 }
 
 // fuzz_coupling: the tabulated Hertz profile gave 𝓕 = 1 + 2e-15 at ε = 4.4e11.
