@@ -35,7 +35,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     describe("F", F);
     describe("T", T);
     validity vF = valid_if(F >= 0 && F < 1);
-    if (!continuous && F > 0) vF = validity::invalid;
+    // (Below the smallest normal value, F is answered to 1e-6 of that value:
+    // ε = 0 for the uncoupled caps then, or a domain error.)
+    if (!continuous && F > 0) vF = F < 1e-300 ? validity::ambiguous : validity::invalid;
     // Beyond ~1e300 the ratio, and so a tiny T, leaves what double resolves.
     validity vT = valid_if(T > 0 && T <= top);
     if (vT == validity::valid && (T < 1e-290 * top || !continuous)) vT = validity::ambiguous;
