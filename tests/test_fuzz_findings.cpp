@@ -122,6 +122,10 @@ TEST(FuzzFindings, CouplingInverseAtTheTopOfTheForce) {
   const elliptic_limit_surface<double> cone(0.0173969741280550205254);
   const double tiny = 3.75489890839347373574e-322;
   EXPECT_NEAR(ratio_from_force(cone, tiny), 0.0173969741280550205254 * tiny, 2e-323);
+  // τ = 1e-10: 𝓕 steps by 1e10 subnormals per step of ε; ε ≈ τF.
+  const elliptic_limit_surface<double> steep(1.00703517801109410927e-10);
+  const double small = 5.9100901405666000387e-314;
+  EXPECT_NEAR(ratio_from_force(steep, small), 1.00703517801109410927e-10 * small, 2e-323);
 }
 
 // fuzz_coupling: the tabulated Hertz profile gave 𝓕 = 1 + 2e-15 at ε = 4.4e11.

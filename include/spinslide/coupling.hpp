@@ -18,7 +18,6 @@
 #include <boost/math/tools/roots.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 
-#include <algorithm>
 #include <cmath>
 
 namespace spinslide {
@@ -29,9 +28,12 @@ namespace detail {
 // at 0 (its sup or inf) and the direction.  A bracket [ε/4, ε] or [ε, 4ε] is
 // grown geometrically from ε = 1 (at most ~1100 steps, the exponent range of
 // the type; [0, ε] below the normal numbers), then refined by TOMS 748 to
-// full precision.  A target not reached below max_value/2 is a domain error.
+// full precision.  A target not reached below max_value/2 is a domain error,
+// and so is one that g jumps over at ε = 0 (`jumps_at_zero`: the uncoupled
+// caps' 𝓕, whose ⟨1/r⟩ is infinite, goes from 0 to 1 there).
 template <class Real, class G, class Policy>
-Real invert_monotonic(G g, Real target, bool increasing, const char* function, const Policy& pol) {
+Real invert_monotonic(G g, Real target, bool increasing, bool jumps_at_zero, const char* function,
+                      const Policy& pol) {
   auto f = [&](Real e) { return g(e) - target; };
   // Sign of f moves from "below" to "above" as ε grows when increasing.
   auto below = [&](Real e) { return increasing ? f(e) < 0 : f(e) > 0; };
@@ -77,16 +79,10 @@ Real invert_monotonic(G g, Real target, bool increasing, const char* function, c
   const auto r = boost::math::tools::toms748_solve(
       f, lo, hi, flo, fhi, boost::math::tools::eps_tolerance<Real>(), max_iter, pol);
   const Real root = (r.first + r.second) / 2;
-  // g may jump over the target (the uncoupled caps' 𝓕 jumps from 0 to 1):
-  // then the bracket closes on the jump, and no ratio gives the target.  (A
-  // miss below 1e-6 of the smallest normal value is the subnormals' spacing
-  // times a steep g: the elliptic cone's 𝓕 ≈ ε/τ steps by 57 subnormals for
-  // τ = 0.017; found by fuzz_coupling.)
-  BOOST_MATH_STD_USING
-  if (!(fabs(g(root) - target) <=
-        Real(1e-6) * (std::max)(fabs(target), boost::math::tools::min_value<Real>())))
+  if (jumps_at_zero && root < boost::math::tools::min_value<Real>())
     return boost::math::policies::raise_domain_error<Real>(
-        function, "Got target %1%, which the profile jumps over: no ratio gives it.", target, pol);
+        function, "Got target %1%, which the profile jumps over at 0: no ratio gives it.", target,
+        pol);
   return root;
 }
 
@@ -105,8 +101,9 @@ Real ratio_from_force(const Profile& profile, Real F) {
     return boost::math::policies::raise_domain_error<Real>(
         function, "Got F = %1%, but the friction force of a profile lies in [0, 1).", F, Policy());
   if (F == 0) return 0;
-  return detail::invert_monotonic<Real>([&](Real e) { return profile.force(e); }, F, true, function,
-                                        Policy());
+  const bool jumps = !(boost::math::isfinite)(profile.mean_inverse_radius());  // 𝓕′(0) = ⟨1/r⟩/2
+  return detail::invert_monotonic<Real>([&](Real e) { return profile.force(e); }, F, true, jumps,
+                                        function, Policy());
 }
 
 /// ε(𝓣): the ratio at which `profile` has friction torque T.
@@ -123,7 +120,7 @@ Real ratio_from_torque(const Profile& profile, Real T) {
         function, "Got T = %1%, but the friction torque of this profile lies in (0, <r>].", T,
         Policy());
   if (T == top) return 0;
-  return detail::invert_monotonic<Real>([&](Real e) { return profile.torque(e); }, T, false,
+  return detail::invert_monotonic<Real>([&](Real e) { return profile.torque(e); }, T, false, false,
                                         function, Policy());
 }
 
