@@ -148,7 +148,7 @@ class profile_base {
   using policy_type = Policy;
 
   force_torque_result<Real> force_torque(Real eps) const {
-    force_torque_result<Real> r;
+    force_torque_result<Real> r{Real(0), Real(0)};  // set by profile_domain_error on failure
     if (profile_domain_error(eps, "spinslide::profile::force_torque<%1%>(%1%)", r, Policy()))
       return r;
     if (eps == 0) return {Real(0), self().mean_radius()};      // pure spinning

@@ -63,7 +63,7 @@ class tabulated_profile {
   /// < 3e-15 measured); ε ≥ 0 and +∞; NaN or ε < 0 is a domain error through
   /// the policy.  No allocation; thread-safe.
   force_torque_result<Real> force_torque(Real eps) const {
-    force_torque_result<Real> r;
+    force_torque_result<Real> r{Real(0), Real(0)};  // set by profile_domain_error on failure
     if (detail::profile_domain_error(eps, "spinslide::tabulated_profile<%1%>::force_torque(%1%)", r,
                                      Policy()))
       return r;
