@@ -90,6 +90,15 @@ TEST(FuzzFindings, PadeAtTheLargestRatio) {
   // <r>/(1 + 2ε<r>/<r²>) with ε<r>/<r²> ~ 1e-103: <r>.
   EXPECT_DOUBLE_EQ(ft.torque, 7.56851905622497924774e-103);
   EXPECT_EQ(ft.force, 1.0);
+  // fuzz_coupling (the campaign): 2ε<r>/<r²> overflowed for ε > 7.6e288 with
+  // <r>/<r²> = 2.3e19, so 𝓣 was 0 where it is <r²>/(2ε) = 8.3e-317 (ε𝓣 → <r²>/2),
+  // and ratio_from_torque missed that target.
+  const pade_approximation<double> steep(9887988544.66558456421, 9957489837.05406570435,
+                                         4.21696503428580530731e-10);
+  const double eps = 2.5437e306, sq = 4.21696503428580530731e-10;
+  EXPECT_NEAR(steep.torque(eps), sq / 2 / eps, 1e-322);
+  const double target = 8.28904556439244913966e-317;
+  EXPECT_NEAR(steep.torque(ratio_from_torque(steep, target)), target, 1e-322);
 }
 
 // fuzz_coupling: a force target among the subnormal ratios could not be

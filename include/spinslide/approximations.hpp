@@ -115,10 +115,13 @@ class pade_approximation
   /// check and the limits ε = 0 and ε = ∞; call force_torque() instead.
   force_torque_result<Real> general(Real eps) const {
     // Written so that no intermediate overflows for any moments (each ≥ the
-    // smallest normal value, so 2/⟨1/r⟩ is finite) and ε: 2ε·(⟨r⟩/⟨r²⟩), not
-    // (2ε)(⟨r⟩/⟨r²⟩), which is ∞ · 0 where the ratio underflows (found by fuzz_profiles).
-    const Real x = (2 / inv_) / eps;
-    return {1 / (1 + x), r_ / (1 + 2 * (eps * (r_ / sq_)))};
+    // smallest normal value, so 2/⟨1/r⟩ is finite) and ε (found by
+    // fuzz_profiles and fuzz_coupling): with x = ε⟨r⟩/⟨r²⟩, which may be ∞,
+    // 𝓣 = ⟨r⟩/(1 + 2x), or for x > 1 the same as (⟨r²⟩/(2ε))/(1 + 1/(2x)),
+    // which keeps 𝓣 ≈ ⟨r²⟩/(2ε) where 2x overflows.
+    const Real x = eps * (r_ / sq_);
+    const Real torque = x > 1 ? Real(sq_ / 2 / eps / (1 + 1 / (2 * x))) : Real(r_ / (1 + 2 * x));
+    return {1 / (1 + (2 / inv_) / eps), torque};
   }
 
  private:
