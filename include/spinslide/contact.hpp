@@ -170,7 +170,7 @@ class contact_law {
     if ((boost::math::isfinite)(d) || !(boost::math::isfinite)(a[0]) ||
         !(boost::math::isfinite)(a[1]) || !(boost::math::isfinite)(a[2]))
       return d;
-    const Real m = (std::max)({fabs(a[0]), fabs(a[1]), fabs(a[2])});
+    const Real m = largest(a[0], a[1], a[2]);
     return m * ((a[0] / m) * n[0] + (a[1] / m) * n[1] + (a[2] / m) * n[2]);
   }
 
@@ -187,7 +187,7 @@ class contact_law {
       for (Real& vi : v) vi /= speed;
       return;
     }
-    const Real m = (std::max)({fabs(v[0]), fabs(v[1]), fabs(v[2])});
+    const Real m = largest(v[0], v[1], v[2]);
     for (Real& vi : v) vi /= m;
     const Real length = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     for (Real& vi : v) vi /= length;
@@ -203,7 +203,7 @@ class contact_law {
     if (!(boost::math::isfinite)(v[0] * n[0] + v[1] * n[1] + v[2] * n[2]) &&
         (boost::math::isfinite)(v[0]) && (boost::math::isfinite)(v[1]) &&
         (boost::math::isfinite)(v[2])) {
-      scale = (std::max)({fabs(v[0]), fabs(v[1]), fabs(v[2])});
+      scale = largest(v[0], v[1], v[2]);
       for (Real& vi : v) vi /= scale;
     }
     const Real vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
@@ -214,6 +214,12 @@ class contact_law {
     return scale * length;
   }
 
+  // The largest |component|.
+  static Real largest(Real x, Real y, Real z) {
+    BOOST_MATH_STD_USING
+    return (std::max)({fabs(x), fabs(y), fabs(z)});
+  }
+
   // √(x² + y² + z²) without overflow or underflow for any finite input.
   static Real norm(Real x, Real y, Real z) {
     BOOST_MATH_STD_USING
@@ -222,7 +228,7 @@ class contact_law {
     if ((boost::math::isnan)(s2)) return s2;
     if (s2 > boost::math::tools::min_value<Real>() && s2 < boost::math::tools::max_value<Real>())
       return sqrt(s2);
-    const Real m = (std::max)({fabs(x), fabs(y), fabs(z)});
+    const Real m = largest(x, y, z);
     if (m == 0 || !(boost::math::isfinite)(m)) return m;
     const Real a = x / m, b = y / m, c = z / m;
     return m * sqrt(a * a + b * b + c * c);

@@ -345,8 +345,8 @@ stop_result<typename Profile::value_type> integrate_stop(
   auto ln_rho = [&](double z0) {
     return log_ratio ? z0 - z_start : z0 > 0 ? std::log(z0) : -inf_d;
   };
-  Real t_off = 0, s_off = 0, th_off = 0;     // t, s, θ where the current variable starts
-  Real g_unit = by_speed ? Real(1) : gamma;  // the unit of t̂: γ by spin, 1 by speed
+  Real t_off = 0, s_off = 0, th_off = 0;  // t, s, θ where the current variable starts
+  auto g_unit = [&] { return by_speed ? Real(1) : gamma; };  // the unit of t̂: γ by spin
   // The ratio e^q, and 0 below the floor or where the type underflows.
   auto ratio_of = [&](double z0) {
     return log_ratio ? (z0 > q_floor ? Real(exp(Real(z0))) : Real(0))
@@ -389,14 +389,14 @@ stop_result<typename Profile::value_type> integrate_stop(
   };
   // t, s, θ from the scaled state, each a product taken without spurious
   // over- or underflow (γ, L and M may each be near the ends of the type).
-  auto time_of = [&](double t_hat) { return t_off + detail::product(g_unit, lead, Real(t_hat)); };
+  auto time_of = [&](double t_hat) { return t_off + detail::product(g_unit(), lead, Real(t_hat)); };
   auto distance_of = [&](double s_hat) {
     return s_off + (by_speed ? detail::product(lead, lead, Real(s_hat))
-                             : detail::product(g_unit, lead, other, Real(s_hat)));
+                             : detail::product(g_unit(), lead, other, Real(s_hat)));
   };
   auto angle_of = [&](double th_hat) {
     return th_off + (by_speed ? detail::product(lead, other, Real(th_hat))
-                              : detail::product(g_unit, lead, lead, Real(th_hat)));
+                              : detail::product(g_unit(), lead, lead, Real(th_hat)));
   };
   auto sample = [&](const state& z, double u) {
     const Real leading = detail::product(lead, Real(exp(-Real(u))));
@@ -462,7 +462,6 @@ stop_result<typename Profile::value_type> integrate_stop(
       by_speed = !by_speed;
       lead = by_speed ? here.speed : here.spin;
       other = by_speed ? here.spin : here.speed;
-      g_unit = by_speed ? Real(1) : gamma;
       r_start = 1 / static_cast<double>(ratio_of(zc[0]));
       z = {log_ratio ? -zc[0] : 1.0, 0, 0, 0};
       z_start = z[0];
@@ -487,7 +486,8 @@ stop_result<typename Profile::value_type> integrate_stop(
     };
     // The time integrand decays at least like e^{−u}: stop when the rest is
     // negligible, and add it (in the terminal regime's variable).
-    if (may_stop() && u > 1 && detail::product(g_unit, lead, Real(dz[1])) <= Real(1e-18) * now.time)
+    if (may_stop() && u > 1 &&
+        detail::product(g_unit(), lead, Real(dz[1])) <= Real(1e-18) * now.time)
       return stop_here(time_of(zc[1] + dz[1]), distance_of(zc[2] + dz[2] / 2),
                        angle_of(zc[3] + dz[3] / 2));
     // In either variable: a bound on the remaining time.  ε moves monotonically,
