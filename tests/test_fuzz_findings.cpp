@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace {
 
@@ -99,6 +100,34 @@ TEST(FuzzFindings, PadeAtTheLargestRatio) {
   EXPECT_NEAR(steep.torque(eps), sq / 2 / eps, 1e-322);
   const double target = 8.28904556439244913966e-317;
   EXPECT_NEAR(steep.torque(ratio_from_torque(steep, target)), target, 1e-322);
+}
+
+// fuzz_profiles (CI, sanitize preset): in the Padé form <r>/<r²> overflowed
+// where ε is subnormal, so x = ε<r>/<r²> was ∞ and 𝓣 = <r²>/(2ε) = ∞ where it
+// is ≈ <r> = DBL_MAX.  The reference is the same formula in long double, whose
+// exponent range holds every intermediate.
+TEST(FuzzFindings, PadeWithAHugeMeanRadiusAtASubnormalRatio) {
+  const auto reference = [](long double r, long double inv, long double sq, long double eps) {
+    const long double x = eps * r / sq, y = eps * inv / 2;
+    return std::pair<double, double>(double(y / (1 + y)), double(r / (1 + 2 * x)));
+  };
+  const double sub = std::numeric_limits<double>::denorm_min();
+  const struct {
+    double r, inv, sq, eps;
+  } cases[] = {{max_d, 0.5, 0.5, sub},                              // the CI input
+               {max_d, 9.13981932194904406104e+152, 0.5, 2 * sub},  // seed 2
+               {max_d, max_d, min_d, 1e-300},   // x ≈ 1.8e316: 𝓣 = <r²>/(2ε)
+               {min_d, min_d, max_d, max_d},    // x ≈ 2.2e-308
+               {1e-300, 1e300, 1e300, 1e300}};  // y ≈ 5e599: 𝓕 = 1
+  for (const auto& c : cases) {
+    const pade_approximation<double> p(c.r, c.inv, c.sq);
+    const auto ft = p.force_torque(c.eps);
+    const auto ref = reference(c.r, c.inv, c.sq, c.eps);
+    EXPECT_TRUE(std::isfinite(ft.force) && std::isfinite(ft.torque)) << c.r << ' ' << c.eps;
+    EXPECT_NEAR(ft.force, ref.first, 4 * std::numeric_limits<double>::epsilon() * ref.first);
+    EXPECT_NEAR(ft.torque, ref.second, 4 * std::numeric_limits<double>::epsilon() * ref.second)
+        << c.r << ' ' << c.sq << ' ' << c.eps;
+  }
 }
 
 // fuzz_coupling: a force target among the subnormal ratios could not be

@@ -16,6 +16,7 @@
 #ifndef SPINSLIDE_APPROXIMATIONS_HPP
 #define SPINSLIDE_APPROXIMATIONS_HPP
 
+#include <spinslide/detail/product.hpp>
 #include <spinslide/profile.hpp>
 
 #include <cmath>
@@ -114,14 +115,21 @@ class pade_approximation
   /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that force_torque() calls after its domain
   /// check and the limits ε = 0 and ε = ∞; call force_torque() instead.
   force_torque_result<Real> general(Real eps) const {
-    // Written so that no intermediate overflows for any moments (each ≥ the
-    // smallest normal value, so 2/⟨1/r⟩ is finite) and ε (found by
-    // fuzz_profiles and fuzz_coupling): with x = ε⟨r⟩/⟨r²⟩, which may be ∞,
-    // 𝓣 = ⟨r⟩/(1 + 2x), or for x > 1 the same as (⟨r²⟩/(2ε))/(1 + 1/(2x)),
-    // which keeps 𝓣 ≈ ⟨r²⟩/(2ε) where 2x overflows.
-    const Real x = eps * (r_ / sq_);
-    const Real torque = x > 1 ? Real(sq_ / 2 / eps / (1 + 1 / (2 * x))) : Real(r_ / (1 + 2 * x));
-    return {1 / (1 + (2 / inv_) / eps), torque};
+    // Written so that no intermediate over- or underflows for any moments in
+    // [min, max] and any ε (fuzz_profiles and fuzz_coupling found four ways):
+    // with x = ε⟨r⟩/⟨r²⟩ and y = ε⟨1/r⟩/2, each a three-factor product that
+    // may be ∞ only where it truly overflows,
+    //   𝓣 = ⟨r⟩/(1 + 2x), or for x > 1 the same as (⟨r²⟩/ε)/2/(1 + 1/(2x)),
+    //   𝓕 = y/(1 + y),    or for y > 1 the same as 1/(1 + 1/y),
+    // where ⟨r²⟩/ε < ⟨r⟩ when x > 1, so 𝓣 ≈ ⟨r²⟩/(2ε) stays finite and exact.
+    BOOST_MATH_STD_USING
+    int e = 0;
+    const Real m = frexp(sq_, &e);  // 1/⟨r²⟩ = (1/m)·2^−e, each factor exact or normal
+    const Real x = detail::product(eps, r_, 1 / m, Real(ldexp(Real(1), -e)));
+    const Real y = detail::product(eps, inv_, Real(0.5));
+    const Real torque = x > 1 ? Real(sq_ / eps / 2 / (1 + 1 / (2 * x))) : Real(r_ / (1 + 2 * x));
+    const Real force = y > 1 ? Real(1 / (1 + 1 / y)) : Real(y / (1 + y));
+    return {force, torque};
   }
 
  private:
