@@ -391,4 +391,36 @@ TEST(FuzzFindings, ContactLawNaNVelocityComponent) {
                std::domain_error);
 }
 
+// fuzz_contact (the campaign of 2026-11-23): 𝓕 of a ring-quadrature annulus
+// and of a weighted sum rounded to 1 + 2⁻⁵² at a large ratio, so μN𝓕
+// overflowed to ∞ for μN = DBL_MAX and the 3-D force had a NaN component
+// (∞ · 0 along the normal).  𝓕 ≤ 1 is exact (𝓕 < 1 for finite ε).
+TEST(FuzzFindings, ForceRoundedAboveOneAtLargeRatios) {
+  const annulus<double> ann(0.635197164334527664131);
+  const auto sum = make_weighted_sum<double>(
+      {0.173717571710168772192, 541249.376203841762617},
+      scaled<uniform_disk<double>>(uniform_disk<double>(), 0.937500000000852762305),
+      ring<double>());
+  EXPECT_LE(ann.force(std::sqrt(2.0) / 6.93531866257113469774e-88), 1.0);
+  EXPECT_LE(sum.force(3.61069398448143300918e+307 / 6.98211634151446680426e+275), 1.0);
+  const std::array<double, 3> n{0, 0, 1};
+  const contact_law<annulus<double>> law_a(ann, 9.99999999999999954748e-07);
+  const auto a = law_a(std::array<double, 3>{1, 1, 1}, std::array<double, 3>{1, 0.556884765625, 1},
+                       n, 6.93531866257113469774e-88, max_d, 1.0);
+  const contact_law<decltype(sum)> law_s(sum, 0.666666666666666629659);
+  const auto s = law_s(std::array<double, 3>{0.666666666666666629659, 3.61069398448143300918e+307,
+                                             0.666666666666666629659},
+                       std::array<double, 3>{max_d, 0, -6.98211634151446680426e+275}, n,
+                       0.999999999999999888978, 1.0, max_d);
+  for (const auto* f : {&a.force, &s.force}) {
+    EXPECT_TRUE(std::isfinite((*f)[0]) && std::isfinite((*f)[1]) && (*f)[2] == 0);
+    // |F| ≤ μN = DBL_MAX, in units of it.
+    EXPECT_LE(std::hypot((*f)[0] / max_d, (*f)[1] / max_d), 1.0);
+  }
+  const double e = 4 * std::numeric_limits<double>::epsilon();
+  const double dir0 = 0.666666666666666629659 / 3.61069398448143300918e+307;  // v₀/|v|
+  EXPECT_NEAR(s.force[0] / max_d, -dir0, e * dir0);
+  EXPECT_NEAR(s.force[1] / max_d, -1.0, e);
+}
+
 }  // namespace
