@@ -470,7 +470,6 @@ stop_result<typename Profile::value_type> integrate_stop(
     }
     state dz;
     rhs(zc, dz, u);
-    const motion_sample<Real> now = sample(zc, u);
     auto stop_here = [&](Real t, Real dist, Real angle) {
       out.time = t;
       out.distance = dist;
@@ -486,11 +485,14 @@ stop_result<typename Profile::value_type> integrate_stop(
     };
     // The time integrand decays at least like e^{−u}: stop when the rest is
     // negligible, and add it (in the terminal regime's variable).
-    if (may_stop() && u > 1 &&
-        detail::product(g_unit(), lead, Real(dz[1])) <= Real(1e-18) * now.time)
-      return stop_here(time_of(zc[1] + dz[1]), distance_of(zc[2] + dz[2] / 2),
-                       angle_of(zc[3] + dz[3] / 2));
-    // In either variable: a bound on the remaining time.  ε moves monotonically,
+    if (may_stop()) {
+      if (u > 1 && detail::product(g_unit(), lead, Real(dz[1])) <= Real(1e-18) * time_of(zc[1]))
+        return stop_here(time_of(zc[1] + dz[1]), distance_of(zc[2] + dz[2] / 2),
+                         angle_of(zc[3] + dz[3] / 2));
+      continue;
+    }
+    const motion_sample<Real> now = sample(zc, u);
+    // In the other variable: a bound on the remaining time.  ε moves monotonically,
     // so 𝓕 (growing ε) or 𝓣 (falling ε) only grows from here, and both motions
     // stop within v/𝓕 = ω/(𝓕/ε) or γω/𝓣 = γv/(ε𝓣) respectively.  Once that
     // bound, and the distance and angle it allows, are below 1e-18 of their
