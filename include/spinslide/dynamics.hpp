@@ -430,8 +430,11 @@ stop_result<typename Profile::value_type> integrate_stop(
     stepper.do_step(rhs);
     const state& zc = stepper.current_state();
     const double u = stepper.current_time();
+    // The motion at the end of this step: observed, and used by the switch and
+    // the stop tests below.
+    const motion_sample<Real> now = sample(zc, u);
     // Requested times inside this step: solve t(u) = t_k on the dense output.
-    while (next_time < times.size() && times[next_time] <= time_of(zc[1])) {
+    while (next_time < times.size() && times[next_time] <= now.time) {
       const Real tk = times[next_time];
       state zi;
       auto t_of = [&](double uu) {
@@ -453,15 +456,14 @@ stop_result<typename Profile::value_type> integrate_stop(
       at_times.push_back(m);
       ++next_time;
     }
-    observe(sample(zc, u));
+    observe(now);
     if (log_ratio ? zc[0] > q_flip : ratio_of(zc[0]) > 1e8) {  // continue in the other variable
-      const motion_sample<Real> here = sample(zc, u);
-      t_off = here.time;
-      s_off = here.distance;
-      th_off = here.angle;
+      t_off = now.time;
+      s_off = now.distance;
+      th_off = now.angle;
       by_speed = !by_speed;
-      lead = by_speed ? here.speed : here.spin;
-      other = by_speed ? here.spin : here.speed;
+      lead = by_speed ? now.speed : now.spin;
+      other = by_speed ? now.spin : now.speed;
       r_start = 1 / static_cast<double>(ratio_of(zc[0]));
       z = {log_ratio ? -zc[0] : 1.0, 0, 0, 0};
       z_start = z[0];
@@ -486,12 +488,11 @@ stop_result<typename Profile::value_type> integrate_stop(
     // The time integrand decays at least like e^{−u}: stop when the rest is
     // negligible, and add it (in the terminal regime's variable).
     if (may_stop()) {
-      if (u > 1 && detail::product(g_unit(), lead, Real(dz[1])) <= Real(1e-18) * time_of(zc[1]))
+      if (u > 1 && detail::product(g_unit(), lead, Real(dz[1])) <= Real(1e-18) * now.time)
         return stop_here(time_of(zc[1] + dz[1]), distance_of(zc[2] + dz[2] / 2),
                          angle_of(zc[3] + dz[3] / 2));
       continue;
     }
-    const motion_sample<Real> now = sample(zc, u);
     // In the other variable: a bound on the remaining time.  ε moves monotonically,
     // so 𝓕 (growing ε) or 𝓣 (falling ε) only grows from here, and both motions
     // stop within v/𝓕 = ω/(𝓕/ε) or γω/𝓣 = γv/(ε𝓣) respectively.  Once that
