@@ -14,6 +14,7 @@
 #include "zoo.hpp"
 
 #include <spinslide/dynamics.hpp>
+#include <spinslide/tabulated_throw.hpp>
 
 namespace {
 

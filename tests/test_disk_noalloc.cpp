@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <spinslide/disk.hpp>
+#include <spinslide/profile.hpp>
 #include <spinslide/tabulated.hpp>
 
 #include <atomic>

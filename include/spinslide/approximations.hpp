@@ -16,8 +16,10 @@
 #ifndef SPINSLIDE_APPROXIMATIONS_HPP
 #define SPINSLIDE_APPROXIMATIONS_HPP
 
+#include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/product.hpp>
-#include <spinslide/profile.hpp>
+#include <spinslide/profile_base.hpp>
+#include <spinslide/profile_concept.hpp>
 
 #include <cmath>
 #include <limits>
@@ -30,24 +32,27 @@ namespace spinslide {
 /// PhysX's torsional patch, LAMMPS "marshall" twisting, YADE, MercuryDPM.
 /// 𝓕(ε) = 1 and 𝓣(ε) = ⟨r⟩ for 0 < ε < ∞.
 template <class Real = double, class Policy = boost::math::policies::policy<>>
-class uncoupled_caps : public detail::profile_base<uncoupled_caps<Real, Policy>, Real, Policy> {
+class uncoupled_caps : public profile_base<uncoupled_caps<Real, Policy>, Real, Policy> {
  public:
-  /// `torque_cap` = ⟨r⟩ of the imitated profile (the torque cap in units of μNa).
+  /// `torque_cap` = ⟨r⟩ of the imitated profile (the torque cap in units of
+  /// μNa): finite and at least the smallest normal number, otherwise
+  /// std::domain_error.
   explicit uncoupled_caps(Real torque_cap = Real(2) / 3)
-      : cap_(detail::checked_parameter<Real>(
-            torque_cap, std::numeric_limits<Real>::min(), std::numeric_limits<Real>::max(), false,
-            "spinslide::uncoupled_caps<%1%>", "Got torque_cap = %1%, but it must be > 0.")) {}
+      : cap_(detail::checked_constructor_argument<Policy>(
+            "spinslide::uncoupled_caps<%1%>::uncoupled_caps(%1%)", "torque_cap", torque_cap,
+            detail::argument_rule::normal_positive)) {}
   /// ⟨r⟩ = the cap.
   Real mean_radius() const { return cap_; }
   /// ∞: the force jumps to 1 at any ε > 0.
   Real mean_inverse_radius() const { return std::numeric_limits<Real>::infinity(); }
   /// ∞: the torque stays at the cap for every finite ε.
   Real mean_square_radius() const { return std::numeric_limits<Real>::infinity(); }
-  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that force_torque() calls after its domain
-  /// check and the limits ε = 0 and ε = ∞; call force_torque() instead.
-  force_torque_result<Real> general(Real) const { return {Real(1), cap_}; }
 
  private:
+  friend class profile_base<uncoupled_caps, Real, Policy>;
+  static constexpr const char* name = "spinslide::uncoupled_caps<%1%>";
+  force_torque_result<Real> general(Real) const { return {Real(1), cap_}; }
+
   Real cap_;
 };
 
@@ -60,29 +65,30 @@ class uncoupled_caps : public detail::profile_base<uncoupled_caps<Real, Policy>,
 /// length) corresponds to τ = μ_t/(μa).
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class elliptic_limit_surface
-    : public detail::profile_base<elliptic_limit_surface<Real, Policy>, Real, Policy> {
+    : public profile_base<elliptic_limit_surface<Real, Policy>, Real, Policy> {
  public:
-  /// `torque_axis` = τ > 0 (finite); otherwise a domain error.
+  /// `torque_axis` = τ: finite and at least the smallest normal number,
+  /// otherwise std::domain_error.
   explicit elliptic_limit_surface(Real torque_axis = Real(2) / 3)
-      : tau_(detail::checked_parameter<Real>(torque_axis, std::numeric_limits<Real>::min(),
-                                             std::numeric_limits<Real>::max(), false,
-                                             "spinslide::elliptic_limit_surface<%1%>",
-                                             "Got torque_axis = %1%, but it must be > 0.")) {}
+      : tau_(detail::checked_constructor_argument<Policy>(
+            "spinslide::elliptic_limit_surface<%1%>::elliptic_limit_surface(%1%)", "torque_axis",
+            torque_axis, detail::argument_rule::normal_positive)) {}
   /// τ = 𝓣(0).
   Real mean_radius() const { return tau_; }
   /// 2/τ, so that 𝓕′(0) = 1/τ = ⟨1/r⟩/2.
   Real mean_inverse_radius() const { return 2 / tau_; }  // 𝓕′(0) = 1/τ
   /// 2τ², so that ε𝓣 → τ² = ⟨r²⟩/2.
   Real mean_square_radius() const { return 2 * tau_ * tau_; }  // ε𝓣 → τ²
-  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that force_torque() calls after its domain
-  /// check and the limits ε = 0 and ε = ∞; call force_torque() instead.
+
+ private:
+  friend class profile_base<elliptic_limit_surface, Real, Policy>;
+  static constexpr const char* name = "spinslide::elliptic_limit_surface<%1%>";
   force_torque_result<Real> general(Real eps) const {
     BOOST_MATH_STD_USING
     const Real h = hypot(eps, tau_);
     return {eps / h, tau_ * (tau_ / h)};  // τ/h ≤ 1: no overflow for any τ
   }
 
- private:
   Real tau_;
 };
 
@@ -91,19 +97,20 @@ class elliptic_limit_surface
 ///   𝓕 = ε/(ε + 2/⟨1/r⟩),   𝓣 = ⟨r⟩⟨r²⟩/(⟨r²⟩ + 2⟨r⟩ε),
 /// so 𝓕′(0) = ⟨1/r⟩/2, 𝓕(∞) = 1, 𝓣(0) = ⟨r⟩, ε𝓣 → ⟨r²⟩/2.
 template <class Real = double, class Policy = boost::math::policies::policy<>>
-class pade_approximation
-    : public detail::profile_base<pade_approximation<Real, Policy>, Real, Policy> {
+class pade_approximation : public profile_base<pade_approximation<Real, Policy>, Real, Policy> {
  public:
-  /// The approximants for the moments ⟨r⟩, ⟨1/r⟩, ⟨r²⟩ (each finite and > 0,
-  /// otherwise a domain error); the defaults are the uniform disk's.
+  /// The approximants for the moments ⟨r⟩, ⟨1/r⟩, ⟨r²⟩ (each finite and at
+  /// least the smallest normal number, otherwise std::domain_error); the
+  /// defaults are the uniform disk's.
   pade_approximation(Real mean_radius = Real(2) / 3, Real mean_inverse_radius = 2,
                      Real mean_square_radius = Real(1) / 2)
-      : r_(positive(mean_radius)),
-        inv_(positive(mean_inverse_radius)),
-        sq_(positive(mean_square_radius)) {}
+      : r_(moment("mean_radius", mean_radius)),
+        inv_(moment("mean_inverse_radius", mean_inverse_radius)),
+        sq_(moment("mean_square_radius", mean_square_radius)) {}
   /// Matched to a profile's moments.
   template <class Profile>
   static pade_approximation matching(const Profile& p) {
+    static_assert(detail::requires_profile<Profile>());
     return pade_approximation(p.mean_radius(), p.mean_inverse_radius(), p.mean_square_radius());
   }
   /// ⟨r⟩ as given.
@@ -112,8 +119,10 @@ class pade_approximation
   Real mean_inverse_radius() const { return inv_; }
   /// ⟨r²⟩ as given.
   Real mean_square_radius() const { return sq_; }
-  /// 𝓕 and 𝓣 for 0 < ε < ∞: the hook that force_torque() calls after its domain
-  /// check and the limits ε = 0 and ε = ∞; call force_torque() instead.
+
+ private:
+  friend class profile_base<pade_approximation, Real, Policy>;
+  static constexpr const char* name = "spinslide::pade_approximation<%1%>";
   force_torque_result<Real> general(Real eps) const {
     // Written so that no intermediate over- or underflows for any moments in
     // [min, max] and any ε (fuzz_profiles and fuzz_coupling found four ways):
@@ -132,11 +141,10 @@ class pade_approximation
     return {force, torque};
   }
 
- private:
-  static Real positive(Real x) {
-    return detail::checked_parameter<Real>(
-        x, std::numeric_limits<Real>::min(), std::numeric_limits<Real>::max(), false,
-        "spinslide::pade_approximation<%1%>", "Got a moment %1%, but every moment must be > 0.");
+  static Real moment(const char* which, Real x) {
+    return detail::checked_constructor_argument<Policy>(
+        "spinslide::pade_approximation<%1%>::pade_approximation(%1%, %1%, %1%)", which, x,
+        detail::argument_rule::normal_positive);
   }
   Real r_, inv_, sq_;
 };

@@ -11,6 +11,7 @@
 #ifndef SPINSLIDE_CYLINDER_HPP
 #define SPINSLIDE_CYLINDER_HPP
 
+#include <spinslide/detail/checks.hpp>
 #include <spinslide/disk.hpp>
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
@@ -34,10 +35,15 @@ struct tilt_integrals {
 /// A, B, C by 2-D quadrature: the chord integral over x in closed form
 /// (c = y − ε, X = √(1 − y²), S = √(X² + c²), L = asinh(X/|c|)):
 ///   ∫ y(ε − y)/ρ dx = −2ycL,  ∫ x²/ρ dx = XS − c²L,  ∫ y(x² + y² − εy)/ρ dx = y[XS + c(y + ε)L],
-/// and the y integral by tanh_sinh, split at y = ε.
-template <class Real>
-tilt_integrals<Real> tilted_pressure_integrals(Real eps) {
+/// and the y integral by tanh_sinh, split at y = ε.  ε must be finite and
+/// ≥ 0; otherwise a domain error through `pol` (NaN components).
+template <class Real, class Policy = boost::math::policies::policy<>>
+tilt_integrals<Real> tilted_pressure_integrals(Real eps, const Policy& pol = Policy()) {
   BOOST_MATH_STD_USING
+  Real invalid = 0;
+  if (!detail::check("spinslide::tilted_pressure_integrals<%1%>(%1%)", "eps", eps,
+                     detail::argument_rule::finite_non_negative, &invalid, pol))
+    return {invalid, invalid, invalid};
   static thread_local boost::math::quadrature::tanh_sinh<Real> q;
   const Real tol = boost::math::tools::root_epsilon<Real>();
   const Real pi = boost::math::constants::pi<Real>();
@@ -88,35 +94,39 @@ struct cylinder_friction {
 /// The self-consistent tilt (theory §10): with κ = 4μh/R,
 ///   α = κ𝓕/(1 − κ²AB),  β = κBα,  F_along = −(𝓕 + βA),  F_sideways = αB,  T = −(𝓣 + βC).
 /// h = 0 is the flat disk.  A tilt with α² + β² > 1 would need negative
-/// pressure at the rear (the cylinder tips): a domain error, as are ε < 0 or
-/// NaN and h, R, μ negative or NaN.
-template <class Real>
-cylinder_friction<Real> tilted_cylinder_friction(Real eps, Real height, Real radius, Real mu) {
-  BOOST_MATH_STD_USING
-  static const char* function = "spinslide::tilted_cylinder_friction<%1%>";
-  using boost::math::policies::raise_domain_error;
-  const boost::math::policies::policy<> pol;
-  if (!(eps >= 0))
-    return {raise_domain_error<Real>(function, "Got eps = %1%, but it must be >= 0.", eps, pol), 0,
-            0, 0, 0};
-  if (!(height >= 0) || !(radius > 0) || !(mu >= 0))
-    return {raise_domain_error<Real>(
-                function, "Got height = %1%: h, R and mu must be >= 0 (R > 0).", height, pol),
-            0, 0, 0, 0};
-  const auto ft = force_torque(eps);
-  const Real kappa = 4 * mu * height / radius;
+/// pressure at the rear (the cylinder tips): a domain error through `pol`,
+/// as are ε < 0 or NaN, `height` h or `friction_coefficient` μ negative, not
+/// finite or NaN, and `radius` R not finite and > 0.  Every component of the
+/// result is then the policy's NaN.
+template <class Real, class Policy = boost::math::policies::policy<>>
+cylinder_friction<Real> tilted_cylinder_friction(Real eps, Real height, Real radius,
+                                                 Real friction_coefficient,
+                                                 const Policy& pol = Policy()) {
+  static const char* function = "spinslide::tilted_cylinder_friction<%1%>(%1%, %1%, %1%, %1%)";
+  using detail::argument_rule;
+  using detail::check;
+  Real bad = 0;
+  if (!check(function, "eps", eps, argument_rule::non_negative, &bad, pol) ||
+      !check(function, "height", height, argument_rule::finite_non_negative, &bad, pol) ||
+      !check(function, "radius", radius, argument_rule::finite_positive, &bad, pol) ||
+      !check(function, "friction_coefficient", friction_coefficient,
+             argument_rule::finite_non_negative, &bad, pol))
+    return {bad, bad, bad, bad, bad};
+  const auto ft = force_torque(eps, pol);
+  const Real kappa = 4 * friction_coefficient * height / radius;
   if (kappa == 0 || (boost::math::isinf)(eps))
     return {-ft.force, 0, -ft.torque, kappa * ft.force, 0};
-  const auto I = tilted_pressure_integrals(eps);
+  const auto I = tilted_pressure_integrals(eps, pol);
   const Real alpha = kappa * ft.force / (1 - kappa * kappa * I.A * I.B);
   const Real beta = kappa * I.B * alpha;
-  if (!(alpha * alpha + beta * beta <= 1) || !(1 - kappa * kappa * I.A * I.B > 0))
-    return {raise_domain_error<Real>(
-                function,
-                "The pressure tilt needed for this height (kappa = 4 mu h/R = %1%) would lift "
-                "the rear of the face: the cylinder tips over.",
-                kappa, pol),
-            0, 0, 0, 0};
+  if (!(alpha * alpha + beta * beta <= 1) || !(1 - kappa * kappa * I.A * I.B > 0)) {
+    bad = detail::raise_argument_error(
+        function, "kappa = 4*friction_coefficient*height/radius",
+        "small enough that the pressure tilt leaves the rear of the face loaded (else the "
+        "cylinder tips over)",
+        kappa, pol);
+    return {bad, bad, bad, bad, bad};
+  }
   return {-(ft.force + beta * I.A), alpha * I.B, -(ft.torque + beta * I.C), alpha, beta};
 }
 

@@ -13,6 +13,7 @@
 #ifndef SPINSLIDE_DISK_HPP
 #define SPINSLIDE_DISK_HPP
 
+#include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/disk_fast.hpp>
 
 #include <boost/cstdint.hpp>
@@ -227,52 +228,33 @@ T force_derivative_imp(const disk_state<T>& s, bool torque, const char* function
   return torque ? T(-s.eps * fd) : fd;
 }
 
+// What a public disk function returns: one quantity, or 𝓕 and 𝓣 together.
 enum class disk_quantity { force, torque, force_derivative, torque_derivative };
-
-// NaN or ε < 0: a domain error through the policy.  Checked in the caller's
-// own type, before promotion, so that the message names that type.
-template <class T, class Policy>
-bool domain_error_ratio(T eps, const char* function, T& result, const Policy& pol) {
-  if ((boost::math::isnan)(eps) || eps < 0) {
-    result = boost::math::policies::raise_domain_error<T>(
-        function, "Got eps = %1%, but the ratio eps = v/(R omega) must be >= 0.", eps, pol);
-    return true;
-  }
-  return false;
-}
+struct disk_pair {};
 
 // Pure spinning (ε = 0, including −0.0) and pure sliding (ε = +∞).
 template <class T>
-bool disk_limit_value(T eps, disk_quantity q, T& result) {
+T disk_limit(T eps, disk_quantity q) {
   if (eps == 0) {
     switch (q) {
       case disk_quantity::force:
-        result = 0;
-        break;
-      case disk_quantity::torque:
-        result = T(2) / 3;
-        break;
-      case disk_quantity::force_derivative:
-        result = 1;
-        break;
       case disk_quantity::torque_derivative:
-        result = 0;
-        break;
+        return 0;
+      case disk_quantity::torque:
+        return T(2) / 3;
+      case disk_quantity::force_derivative:
+        return 1;
     }
-    return true;
   }
-  if ((boost::math::isinf)(eps)) {
-    result = q == disk_quantity::force ? T(1) : T(0);
-    return true;
-  }
-  return false;
+  return q == disk_quantity::force ? T(1) : T(0);  // ε = +∞
+}
+template <class T>
+force_torque_result<T> disk_limit(T eps, disk_pair) {
+  return {disk_limit(eps, disk_quantity::force), disk_limit(eps, disk_quantity::torque)};
 }
 
 template <class T, class Policy>
-T disk_imp(T eps, disk_quantity q, T series_below, const char* function, const Policy& pol) {
-  T limit = 0;
-  if (disk_limit_value(eps, q, limit)) return limit;
-  const disk_state<T> s = make_disk_state(eps, series_below, pol);
+T disk_evaluate(const disk_state<T>& s, disk_quantity q, const char* function, const Policy& pol) {
   switch (q) {
     case disk_quantity::force:
       return force_imp(s, function, pol);
@@ -283,7 +265,30 @@ T disk_imp(T eps, disk_quantity q, T series_below, const char* function, const P
     case disk_quantity::torque_derivative:
       return force_derivative_imp(s, true, function, pol);
   }
-  return limit;  // unreachable
+  return 0;  // unreachable
+}
+template <class T, class Policy>
+force_torque_result<T> disk_evaluate(const disk_state<T>& s, disk_pair, const char* function,
+                                     const Policy& pol) {
+  return {force_imp(s, function, pol), torque_imp(s, function, pol)};
+}
+
+// The fast path (detail/disk_fast.hpp) serves 𝓕, 𝓣 and the pair.
+inline bool disk_fast_serves(disk_quantity q) {
+  return q == disk_quantity::force || q == disk_quantity::torque;
+}
+inline bool disk_fast_serves(disk_pair) { return true; }
+template <class R>
+R disk_fast_value(R eps, disk_quantity q) {
+  R f, t;
+  disk_fast(eps, f, t);
+  return q == disk_quantity::force ? f : t;
+}
+template <class R>
+force_torque_result<R> disk_fast_value(R eps, disk_pair) {
+  force_torque_result<R> r;
+  disk_fast(eps, r.force, r.torque);
+  return r;
 }
 
 // The Boost.Math calling convention: promote the argument, evaluate in the
@@ -299,27 +304,55 @@ struct disk_types {
                                                 boost::math::policies::assert_undefined<>>::type;
 };
 
-template <class T, class Policy>
-typename disk_types<T, Policy>::result_type disk_public(T eps, disk_quantity q,
-                                                        const char* function, const Policy&) {
+template <class R, class Policy, class V>
+R disk_narrow(V v, const char* function) {
+  return boost::math::policies::checked_narrowing_cast<R, Policy>(v, function);
+}
+template <class R, class Policy, class V>
+force_torque_result<R> disk_narrow(const force_torque_result<V>& v, const char* function) {
+  return {disk_narrow<R, Policy>(v.force, function), disk_narrow<R, Policy>(v.torque, function)};
+}
+
+// A disk function at a checked ratio ε ≥ 0 (or +∞) of the result type R:
+// the fast path where it serves, else the limits, the Carlson forms and the
+// series in the evaluation type.  `Quantity` is a disk_quantity or disk_pair.
+template <class R, class Policy, class Quantity>
+auto disk_at_valid_ratio(R eps, Quantity q, const char* function, const Policy&) {
+  using types = disk_types<R, Policy>;
+  using value_type = typename types::value_type;
+  using forwarding_policy = typename types::forwarding_policy;
+  if constexpr (has_fast_disk<R>::value) {
+    if (disk_fast_serves(q)) return disk_fast_value(eps, q);
+  }
+  const forwarding_policy pol;
+  const value_type e = static_cast<value_type>(eps);
+  if (e == 0 || (boost::math::isinf)(e))
+    return disk_narrow<R, forwarding_policy>(disk_limit(e, q), function);
+  const disk_state<value_type> s = make_disk_state(e, series_threshold<R, value_type>(), pol);
+  return disk_narrow<R, forwarding_policy>(disk_evaluate(s, q, function, pol), function);
+}
+
+template <class R>
+R disk_invalid(R nan, disk_quantity) {
+  return nan;
+}
+template <class R>
+force_torque_result<R> disk_invalid(R nan, disk_pair) {
+  return {nan, nan};
+}
+
+// Every public disk function: the check of ε in the caller's own type (so
+// that the message names that type), then disk_at_valid_ratio.
+template <class T, class Policy, class Quantity>
+auto disk_public(T eps, Quantity q, const char* function, const Policy& pol) {
   using types = disk_types<T, Policy>;
   using result_type = typename types::result_type;
-  using value_type = typename types::value_type;
-  const typename types::forwarding_policy pol;
-  result_type invalid;
-  if (domain_error_ratio(static_cast<result_type>(eps), function, invalid, pol)) return invalid;
-  if constexpr (has_fast_disk<result_type>::value) {
-    if (q == disk_quantity::force || q == disk_quantity::torque) {
-      result_type f, t;
-      disk_fast(static_cast<result_type>(eps), f, t);
-      return q == disk_quantity::force ? f : t;
-    }
-  }
-  const value_type v = disk_imp(static_cast<value_type>(eps), q,
-                                series_threshold<result_type, value_type>(), function, pol);
-  return boost::math::policies::checked_narrowing_cast<result_type,
-                                                       typename types::forwarding_policy>(v,
-                                                                                          function);
+  const auto e = static_cast<result_type>(eps);
+  result_type invalid = 0;
+  if (!check(function, "eps", e, argument_rule::non_negative, &invalid,
+             typename types::forwarding_policy()))
+    return disk_invalid(invalid, q);
+  return disk_at_valid_ratio(e, q, function, pol);
 }
 
 }  // namespace detail
@@ -385,41 +418,14 @@ typename boost::math::tools::promote_args<T>::type torque_derivative(T eps) {
 /// both.  Parameters and errors as for force(); the error names force_torque.
 template <class T, class Policy>
 force_torque_result<typename boost::math::tools::promote_args<T>::type> force_torque(
-    T eps, const Policy&) {
-  using types = detail::disk_types<T, Policy>;
-  using result_type = typename types::result_type;
-  using value_type = typename types::value_type;
-  using forwarding_policy = typename types::forwarding_policy;
-  static const char* function = "spinslide::force_torque<%1%>(%1%)";
-  const forwarding_policy pol;
-  result_type invalid;
-  if (detail::domain_error_ratio(static_cast<result_type>(eps), function, invalid, pol))
-    return {invalid, invalid};
-  if constexpr (detail::has_fast_disk<result_type>::value) {
-    force_torque_result<result_type> r;
-    detail::disk_fast(static_cast<result_type>(eps), r.force, r.torque);
-    return r;
-  }
-  const value_type e = static_cast<value_type>(eps);
-  value_type f, t;
-  if (detail::disk_limit_value(e, detail::disk_quantity::force, f)) {
-    detail::disk_limit_value(e, detail::disk_quantity::torque, t);
-  } else {
-    const detail::disk_state<value_type> s =
-        detail::make_disk_state(e, detail::series_threshold<result_type, value_type>(), pol);
-    f = detail::force_imp(s, function, pol);
-    t = detail::torque_imp(s, function, pol);
-  }
-  using boost::math::policies::checked_narrowing_cast;
-  return {checked_narrowing_cast<result_type, forwarding_policy>(f, function),
-          checked_narrowing_cast<result_type, forwarding_policy>(t, function)};
+    T eps, const Policy& pol) {
+  return detail::disk_public(eps, detail::disk_pair(), "spinslide::force_torque<%1%>(%1%)", pol);
 }
 /// 𝓕(ε) and 𝓣(ε) together, with the default policy.
 template <class T>
 force_torque_result<typename boost::math::tools::promote_args<T>::type> force_torque(T eps) {
   return force_torque(eps, boost::math::policies::policy<>());
 }
-
 /// 𝓕 and 𝓣 for `count` ratios at once, for simulators: force[i] and
 /// torque[i] receive 𝓕(eps[i]) and 𝓣(eps[i]), the same values as
 /// force_torque(eps[i]).  Either output pointer may be null to skip it.
@@ -467,10 +473,9 @@ template <class Real, class Policy = boost::math::policies::policy<>>
 void force_torque_batch(std::span<const Real> eps, std::span<Real> force, std::span<Real> torque,
                         const Policy& pol = Policy()) {
   if (force.size() < eps.size() || torque.size() < eps.size()) {
-    boost::math::policies::raise_domain_error<Real>(
-        "spinslide::force_torque_batch<%1%>(span)",
-        "Got an output span shorter than the input (%1% elements needed).",
-        static_cast<Real>(eps.size()), pol);
+    detail::raise_argument_error<Real>("spinslide::force_torque_batch<%1%>(span)", "eps.size()",
+                                       "at most force.size() and torque.size()",
+                                       static_cast<Real>(eps.size()), pol);
     return;
   }
   force_torque_batch(eps.data(), eps.size(), force.data(), torque.data(), pol);

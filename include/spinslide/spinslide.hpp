@@ -14,8 +14,12 @@
 #include <spinslide/cylinder.hpp>
 #include <spinslide/disk.hpp>
 #include <spinslide/dynamics.hpp>
+#include <spinslide/equations_of_motion.hpp>
 #include <spinslide/profile.hpp>
+#include <spinslide/profile_base.hpp>
+#include <spinslide/profile_concept.hpp>
 #include <spinslide/tabulated.hpp>
+#include <spinslide/tabulated_throw.hpp>
 #include <spinslide/terminal.hpp>
 
 #endif  // SPINSLIDE_SPINSLIDE_HPP

@@ -10,8 +10,10 @@
 #ifndef SPINSLIDE_TABULATED_HPP
 #define SPINSLIDE_TABULATED_HPP
 
+#include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/piecewise_chebyshev.hpp>
-#include <spinslide/profile.hpp>
+#include <spinslide/profile_base.hpp>
+#include <spinslide/profile_concept.hpp>
 
 #include <algorithm>
 
@@ -31,24 +33,25 @@ namespace spinslide {
 /// allocates nothing and touches only const data, so one object may be
 /// shared by any number of threads.
 template <class Real = double, class Policy = boost::math::policies::policy<>>
-class tabulated_profile {
+class tabulated_profile : public profile_base<tabulated_profile<Real, Policy>, Real, Policy> {
  public:
-  /// The floating-point type.
-  using value_type = Real;
-  /// The Boost.Math policy for domain errors.
-  using policy_type = Policy;
   /// The degree of every piece.
   static constexpr std::size_t degree = 8;
 
-  /// Tabulates `profile` (any profile; its errors propagate) to `tolerance`
-  /// (relative trailing Chebyshev coefficients), bisecting at most
-  /// `max_depth` levels.  Allocates; milliseconds to a second.
+  /// Tabulates `profile` (any friction profile; its errors propagate) to
+  /// `tolerance` (relative trailing Chebyshev coefficients; finite and > 0,
+  /// otherwise std::domain_error), bisecting at most `max_depth` levels.
+  /// Allocates; milliseconds to a second.
   template <class Profile>
   explicit tabulated_profile(const Profile& profile, Real tolerance = Real(1e-13),
                              int max_depth = 40)
       : mean_(static_cast<Real>(profile.mean_radius())),
         mean_inverse_(static_cast<Real>(profile.mean_inverse_radius())),
         mean_square_(static_cast<Real>(profile.mean_square_radius())) {
+    static_assert(detail::requires_profile<Profile>());
+    const Real tol = detail::checked_constructor_argument<Policy>(
+        "spinslide::tabulated_profile<%1%>::tabulated_profile(profile, %1%, max_depth)",
+        "tolerance", tolerance, detail::argument_rule::finite_positive);
     using P = typename Profile::value_type;
     auto g = [&](Real t) {
       const P eps = P(t) / (1 - P(t));
@@ -56,31 +59,9 @@ class tabulated_profile {
       return std::make_pair(static_cast<Real>(ft.force * (1 + eps) / eps),
                             static_cast<Real>(ft.torque * (1 + eps)));
     };
-    table_ = detail::piecewise_chebyshev_pair<Real, degree>(g, tolerance, max_depth);
+    table_ = detail::piecewise_chebyshev_pair<Real, degree>(g, tol, max_depth);
   }
 
-  /// 𝓕(ε) and 𝓣(ε) of the tabulated profile (≤ 1e-10 relative, tested;
-  /// < 3e-15 measured); ε ≥ 0 and +∞; NaN or ε < 0 is a domain error through
-  /// the policy.  No allocation; thread-safe.
-  force_torque_result<Real> force_torque(Real eps) const {
-    force_torque_result<Real> r{Real(0), Real(0)};  // set by profile_domain_error on failure
-    if (detail::profile_domain_error(eps, "spinslide::tabulated_profile<%1%>::force_torque(%1%)", r,
-                                     Policy()))
-      return r;
-    if (eps == 0) return {Real(0), mean_};
-    if ((boost::math::isinf)(eps)) return {Real(1), Real(0)};
-    const Real s = 1 / (1 + eps);  // 1 − t, exact for large ε where t rounds to 1
-    const Real t = eps * s;
-    const auto g = table_(t);
-    // The table's error (a few ulp) must not push 𝓕 above 1 or 𝓣 above ⟨r⟩
-    // (found by fuzz_coupling: 𝓕 = 1 + 2e-15 at ε = 4e11); clamping only
-    // brings the value nearer the exact one.
-    return {(std::min)(t * g.first, Real(1)), (std::min)(s * g.second, mean_)};
-  }
-  /// 𝓕(ε); as force_torque().
-  Real force(Real eps) const { return force_torque(eps).force; }
-  /// 𝓣(ε); as force_torque().
-  Real torque(Real eps) const { return force_torque(eps).torque; }
   /// ⟨r⟩ of the tabulated profile.
   Real mean_radius() const { return mean_; }
   /// ⟨1/r⟩ of the tabulated profile.
@@ -94,6 +75,20 @@ class tabulated_profile {
   int deepest_level() const { return table_.deepest(); }
 
  private:
+  friend class profile_base<tabulated_profile, Real, Policy>;
+  static constexpr const char* name = "spinslide::tabulated_profile<%1%>";
+  // 𝓕 and 𝓣 from the table (≤ 1e-10 relative, tested; < 3e-15 measured).
+  // No allocation; thread-safe.
+  force_torque_result<Real> general(Real eps) const {
+    const Real s = 1 / (1 + eps);  // 1 − t, exact for large ε where t rounds to 1
+    const Real t = eps * s;
+    const auto g = table_(t);
+    // The table's error (a few ulp) must not push 𝓕 above 1 or 𝓣 above ⟨r⟩
+    // (found by fuzz_coupling: 𝓕 = 1 + 2e-15 at ε = 4e11); clamping only
+    // brings the value nearer the exact one.
+    return {(std::min)(t * g.first, Real(1)), (std::min)(s * g.second, mean_)};
+  }
+
   Real mean_, mean_inverse_, mean_square_;
   detail::piecewise_chebyshev_pair<Real, degree> table_;
 };

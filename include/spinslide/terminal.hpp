@@ -15,12 +15,14 @@
 #ifndef SPINSLIDE_TERMINAL_HPP
 #define SPINSLIDE_TERMINAL_HPP
 
-#include <spinslide/coupling.hpp>
+#include <spinslide/detail/checks.hpp>
 #include <spinslide/profile.hpp>
+#include <spinslide/profile_concept.hpp>
 
 #include <boost/math/tools/toms748_solve.hpp>
 
 #include <limits>
+#include <utility>
 
 namespace spinslide {
 
@@ -53,19 +55,11 @@ struct inertia_window {
 /// errors of its own (a profile's moments are finite and > 0).
 template <class Profile>
 inertia_window<typename Profile::value_type> terminal_window(const Profile& p) {
+  static_assert(detail::requires_profile<Profile>());
   return {p.mean_square_radius() / 2, 2 * p.mean_radius() / p.mean_inverse_radius()};
 }
 
 namespace detail {
-
-template <class Real, class Policy>
-Real checked_inertia_ratio(Real gamma, const char* function, const Policy& pol) {
-  if (!(gamma > 0) || !(boost::math::isfinite)(gamma))
-    return boost::math::policies::raise_domain_error<Real>(
-        function, "Got inertia_ratio = %1%, but gamma = I/(m R^2) must be finite and > 0.", gamma,
-        pol);
-  return gamma;
-}
 
 // The terms of the flow at ε ∈ [0, ∞]: 𝓕/ε, 𝓣, 𝓕 and ε𝓣, with the limits
 // 𝓕/ε → ⟨1/r⟩/2 (ε → 0) and ε𝓣 → ⟨r²⟩/2 (ε → ∞) wherever 𝓕 or 𝓣 is not a
@@ -155,12 +149,16 @@ bool bracket_next_zero(const Profile& p, Real gamma, Real eps, Real& lo, Real& h
 /// ≥ 0, γ finite and > 0; otherwise a domain error.
 template <class Profile, class Real>
 Real ratio_flow(const Profile& profile, Real eps, Real inertia_ratio) {
+  static_assert(detail::requires_profile<Profile>());
   using Policy = typename Profile::policy_type;
+  using detail::argument_rule;
   static const char* function = "spinslide::ratio_flow<%1%>(profile, %1%, %1%)";
-  const Real gamma = detail::checked_inertia_ratio(inertia_ratio, function, Policy());
-  if (!(eps >= 0) || !(boost::math::isfinite)(eps))
-    return boost::math::policies::raise_domain_error<Real>(
-        function, "Got eps = %1%, but the ratio must be finite and >= 0.", eps, Policy());
+  Real invalid = 0;
+  if (!detail::check(function, "inertia_ratio", inertia_ratio, argument_rule::finite_positive,
+                     &invalid, Policy()) ||
+      !detail::check(function, "eps", eps, argument_rule::finite_non_negative, &invalid, Policy()))
+    return invalid;
+  const Real gamma = inertia_ratio;
   if (eps == 0) return 0;
   const auto ft = profile.force_torque(eps);
   return eps - gamma * ft.force / ft.torque;
@@ -173,12 +171,14 @@ Real ratio_flow(const Profile& profile, Real eps, Real inertia_ratio) {
 /// γ not finite and > 0 is a domain error.
 template <class Profile, class Real>
 terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio) {
+  static_assert(detail::requires_profile<Profile>());
   using Policy = typename Profile::policy_type;
   static const char* function = "spinslide::terminal_motion<%1%>(profile, %1%)";
-  const Real gamma = detail::checked_inertia_ratio(inertia_ratio, function, Policy());
-  // A bad γ was reported through a policy that does not throw: return its NaN
-  // rather than go on to a second, different error.
-  if ((boost::math::isnan)(gamma)) return {terminal_regime::sliding_and_spinning, gamma};
+  Real invalid = 0;
+  if (!detail::check(function, "inertia_ratio", inertia_ratio,
+                     detail::argument_rule::finite_positive, &invalid, Policy()))
+    return {terminal_regime::sliding_and_spinning, invalid};
+  const Real gamma = inertia_ratio;
   const auto ends = detail::attracting_ends(profile, gamma);
   const Real inf = std::numeric_limits<Real>::infinity();
   if (ends.first && ends.second) {
@@ -212,16 +212,18 @@ terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio)
 template <class Profile, class Real>
 terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio,
                                      Real initial_ratio) {
+  static_assert(detail::requires_profile<Profile>());
   using Policy = typename Profile::policy_type;
+  using detail::argument_rule;
   static const char* function = "spinslide::terminal_motion<%1%>(profile, %1%, %1%)";
-  const Real gamma = detail::checked_inertia_ratio(inertia_ratio, function, Policy());
-  if ((boost::math::isnan)(gamma)) return {terminal_regime::sliding_and_spinning, gamma};
+  Real invalid = 0;
+  if (!detail::check(function, "inertia_ratio", inertia_ratio, argument_rule::finite_positive,
+                     &invalid, Policy()) ||
+      !detail::check(function, "initial_ratio", initial_ratio, argument_rule::non_negative,
+                     &invalid, Policy()))
+    return {terminal_regime::sliding_and_spinning, invalid};
+  const Real gamma = inertia_ratio;
   const Real inf = std::numeric_limits<Real>::infinity();
-  if (!(initial_ratio >= 0)) {
-    const Real bad = boost::math::policies::raise_domain_error<Real>(
-        function, "Got initial_ratio = %1%, but it must be >= 0.", initial_ratio, Policy());
-    return {terminal_regime::sliding_and_spinning, bad};
-  }
   if (initial_ratio == 0) return {terminal_regime::pure_spinning, Real(0)};
   if ((boost::math::isinf)(initial_ratio)) return {terminal_regime::pure_sliding, inf};
   const Real g = detail::flow_over_ratio(profile, initial_ratio, gamma);

@@ -11,7 +11,7 @@
 
 #include <spinslide/detail/branch_free_log.hpp>
 #include <spinslide/detail/disk_tables.hpp>
-#include <spinslide/detail/piecewise_chebyshev.hpp>
+#include <spinslide/detail/horner.hpp>
 
 #include <algorithm>
 #include <cstddef>

@@ -13,6 +13,8 @@
 #ifndef SPINSLIDE_DETAIL_PIECEWISE_CHEBYSHEV_HPP
 #define SPINSLIDE_DETAIL_PIECEWISE_CHEBYSHEV_HPP
 
+#include <spinslide/detail/horner.hpp>
+
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/chebyshev.hpp>
 
@@ -26,10 +28,10 @@
 namespace spinslide {
 namespace detail {
 
-// The machinery shared by this runtime table and by the compile-time tables
-// of the disk's fast path (tools/generate_disk_tables.cpp, which runs it in
-// cpp_bin_float_50): Chebyshev interpolation, conversion to monomials, and
-// the two-chain Horner loop that evaluates a pair of polynomials.
+// The machinery shared by this runtime table and by the generator of the
+// compile-time tables of the disk's fast path (tools/generate_disk_tables.cpp,
+// which runs it in cpp_bin_float_50): Chebyshev interpolation and conversion
+// to monomials.  Both evaluate with detail/horner.hpp.
 
 // The j-th of n Chebyshev points of the first kind, cos(π(j + ½)/n): interior
 // points, so the ends of a piece (singular points, or ε = 0 and ε = ∞) are
@@ -71,22 +73,6 @@ void chebyshev_to_monomial(const Real* c, std::size_t n, Real* m) {
     for (std::size_t j = 0; j < n; ++j) t_next[j] -= t_prev[j];
     t_prev.swap(t_cur);
     t_cur.swap(t_next);
-  }
-}
-
-// Σ_k c[a + k·stride] x^k and Σ_k c[b + k·stride] x^k, k = 0..Degree: two
-// independent Horner chains in one loop, so that their latencies overlap.
-// Offsets rather than pointers, so that a loop over many x with a different
-// piece each vectorizes (as gathers).  (Estrin's scheme was measured too: no
-// faster here, and up to 1.6× the rounding error.)
-template <std::size_t Degree, class Real>
-inline void horner_pair(const Real* c, std::ptrdiff_t a, std::ptrdiff_t b, std::ptrdiff_t stride,
-                        Real x, Real& sa, Real& sb) {
-  sa = c[a + std::ptrdiff_t(Degree) * stride];
-  sb = c[b + std::ptrdiff_t(Degree) * stride];
-  for (std::ptrdiff_t k = std::ptrdiff_t(Degree); k-- > 0;) {
-    sa = sa * x + c[a + k * stride];
-    sb = sb * x + c[b + k * stride];
   }
 }
 

@@ -1,0 +1,174 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file checks.hpp
+/// Every input check of the library (docs/architecture.md, "Input checks").
+///
+/// A check names the entry point that was called (`function`, Boost.Math's
+/// format: "spinslide::annulus<%1%>::annulus(%1%)") and the argument that was
+/// bad (`name`), and states the rule the argument breaks.  The rules are the
+/// `argument_rule`s below; each is used wherever its kind of argument appears.
+///
+/// Two ways to report, one for functions and one for constructors:
+///  - a function reports through its policy (`check`, `checked`): by default
+///    std::domain_error; with errno_on_error or ignore_error the caller gets
+///    NaN back and returns it (and computes nothing more, so that no second
+///    error follows the first);
+///  - a constructor throws std::domain_error whatever the class's policy
+///    (`checked_constructor_argument`): it has no NaN to return in place of
+///    an object, and an object built from a bad argument would answer every
+///    later call wrongly.
+#ifndef SPINSLIDE_DETAIL_CHECKS_HPP
+#define SPINSLIDE_DETAIL_CHECKS_HPP
+
+#include <boost/math/policies/error_handling.hpp>
+#include <boost/math/policies/policy.hpp>
+#include <boost/math/special_functions/fpclassify.hpp>
+#include <boost/math/tools/precision.hpp>
+
+#include <string>
+
+namespace spinslide {
+namespace detail {
+
+/// The rules an argument can be held to.
+enum class argument_rule {
+  finite,               ///< x finite (a signed rate such as a spin)
+  non_negative,         ///< x ≥ 0; +∞ allowed (a ratio ε: +∞ is pure sliding)
+  finite_non_negative,  ///< 0 ≤ x < ∞ (speeds, forces, coefficients, weights)
+  finite_positive,      ///< 0 < x < ∞ (lengths, gravity, γ for the flow and the systems)
+  normal_positive,      ///< min_value ≤ x ≤ max_value (model parameters that are divided by)
+  inner_ratio,          ///< 0 ≤ x < 1 (an inner radius in units of the contact radius)
+  shrink_radius,        ///< min_value ≤ x ≤ 1 (a radius a profile is shrunk to)
+  throw_inertia_ratio  ///< min_value ≤ γ ≤ max_value·epsilon (a throw integrated to its stop)
+};
+
+template <class T>
+bool satisfies(T x, argument_rule rule) {
+  using boost::math::tools::epsilon;
+  using boost::math::tools::max_value;
+  using boost::math::tools::min_value;
+  const bool finite = (boost::math::isfinite)(x);
+  switch (rule) {
+    case argument_rule::finite:
+      return finite;
+    case argument_rule::non_negative:
+      return x >= 0;  // false for NaN
+    case argument_rule::finite_non_negative:
+      return x >= 0 && finite;
+    case argument_rule::finite_positive:
+      return x > 0 && finite;
+    case argument_rule::normal_positive:
+      return x >= min_value<T>() && finite;
+    case argument_rule::inner_ratio:
+      return x >= 0 && x < 1;
+    case argument_rule::shrink_radius:
+      return x >= min_value<T>() && x <= 1;
+    case argument_rule::throw_inertia_ratio:
+      return x >= min_value<T>() && x <= max_value<T>() * epsilon<T>();
+  }
+  return false;
+}
+
+inline const char* requirement(argument_rule rule) {
+  switch (rule) {
+    case argument_rule::finite:
+      return "finite";
+    case argument_rule::non_negative:
+      return ">= 0";
+    case argument_rule::finite_non_negative:
+      return "finite and >= 0";
+    case argument_rule::finite_positive:
+      return "finite and > 0";
+    case argument_rule::normal_positive:
+      return "finite and at least the smallest normal number (it is divided by)";
+    case argument_rule::inner_ratio:
+      return "in [0, 1)";
+    case argument_rule::shrink_radius:
+      return "in [min_value, 1]";
+    case argument_rule::throw_inertia_ratio:
+      // Why the throws narrow γ's domain (found by fuzz_stop_time).
+      return "in [min_value, max_value*epsilon] (2.2e-308 to 4.0e292 for double): above it the "
+             "rates gamma*F/T and gamma/T of the integration to the stop overflow, below it gamma "
+             "has too few digits";
+  }
+  return "";
+}
+
+/// Reports `value` of argument `name` through `pol`: "Got name = value, but
+/// it must be requirement."  Returns what the policy returns (NaN unless it
+/// throws).
+template <class T, class Policy>
+T raise_argument_error(const char* function, const char* name, const char* requirement, T value,
+                       const Policy& pol) {
+  // Built only on the error path: Boost formats the message into a string anyway.
+  const std::string message =
+      std::string("Got ") + name + " = %1%, but it must be " + requirement + ".";
+  return boost::math::policies::raise_domain_error<T>(function, message.c_str(), value, pol);
+}
+
+/// True if `x` satisfies `rule`; otherwise reports it through `pol`, stores
+/// the policy's result (NaN) in `*result` and returns false.
+template <class T, class Policy>
+bool check(const char* function, const char* name, T x, argument_rule rule, T* result,
+           const Policy& pol) {
+  if (satisfies(x, rule)) return true;
+  *result = raise_argument_error(function, name, requirement(rule), x, pol);
+  return false;
+}
+
+/// `x` if it satisfies `rule`, otherwise what `pol` returns for the error (NaN).
+template <class T, class Policy>
+T checked(const char* function, const char* name, T x, argument_rule rule, const Policy& pol) {
+  T result = x;
+  check(function, name, x, rule, &result, pol);
+  return result;
+}
+
+/// `Policy` with domain errors that throw: constructors report through it.
+template <class Policy>
+using constructor_policy = typename boost::math::policies::normalise<
+    Policy, boost::math::policies::domain_error<boost::math::policies::throw_on_error>>::type;
+
+/// `x` if it satisfies `rule`; otherwise std::domain_error, whatever `Policy`
+/// says (the constructor rule above).
+template <class Policy = boost::math::policies::policy<>, class T>
+T checked_constructor_argument(const char* function, const char* name, T x, argument_rule rule) {
+  return checked(function, name, x, rule, constructor_policy<Policy>());
+}
+
+/// True once any of `xs` is NaN: an earlier check reported an error through a
+/// policy that does not throw, and the entry point returns NaN rather than
+/// compute on (and report a second, different error).
+template <class... T>
+bool any_reported(T... xs) {
+  return ((boost::math::isnan)(xs) || ...);
+}
+
+/// The initial conditions of a throw, checked (check_throw).
+template <class Real>
+struct throw_input {
+  Real gamma;   ///< γ = I/(mR²)
+  Real v0;      ///< the initial speed
+  Real omega0;  ///< the initial spin
+  /// False once a check reported an error through a policy that does not throw.
+  bool valid() const { return !any_reported(gamma, v0, omega0); }
+};
+
+/// The checks of every entry point that integrates a throw to its stop: γ in
+/// [min_value, max_value·epsilon], v0 and ω0 finite and ≥ 0.  A bad one is
+/// reported through `pol` and comes back as NaN (throw_input::valid).
+template <class Real, class Policy>
+throw_input<Real> check_throw(const char* function, Real inertia_ratio, Real v0, Real omega0,
+                              const Policy& pol) {
+  return {
+      checked(function, "inertia_ratio", inertia_ratio, argument_rule::throw_inertia_ratio, pol),
+      checked(function, "v0", v0, argument_rule::finite_non_negative, pol),
+      checked(function, "omega0", omega0, argument_rule::finite_non_negative, pol)};
+}
+
+}  // namespace detail
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_DETAIL_CHECKS_HPP
