@@ -182,10 +182,10 @@ terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio)
   const auto ends = detail::attracting_ends(profile, gamma);
   const Real inf = std::numeric_limits<Real>::infinity();
   if (ends.first && ends.second) {
-    const Real bad = boost::math::policies::raise_domain_error<Real>(
-        function,
-        "Got inertia_ratio = %1%, for which both eps -> 0 and eps -> infinity attract: the "
-        "outcome depends on the initial ratio (use the overload that takes it).",
+    const Real bad = detail::raise_argument_error(
+        function, "inertia_ratio",
+        "one for which not both eps -> 0 and eps -> infinity attract (for this one the outcome "
+        "depends on the initial ratio: use the overload that takes it)",
         gamma, Policy());
     return {terminal_regime::sliding_and_spinning, bad};
   }
