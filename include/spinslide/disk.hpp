@@ -172,7 +172,7 @@ struct force_derivative_series {
 template <class Series, class T, class Policy>
 T sum(Series series, T init, const char* function, const Policy& pol) {
   boost::uintmax_t max_terms = boost::math::policies::get_max_series_iterations<Policy>();
-  const T result = boost::math::tools::sum_series(
+  T result = boost::math::tools::sum_series(  // not const: returned by move (cpp_bin_float)
       series, boost::math::policies::get_epsilon<T, Policy>(), max_terms, init);
   boost::math::policies::check_series_iterations<T>(function, max_terms, pol);
   return result;
