@@ -48,9 +48,11 @@ TEST(EllipticLimitSurface, OnTheEllipseWithTheMaximumDissipationNormal) {
 TEST(PadeApproximation, HasTheExactLimitsAndWindow) {
   const uniform_disk<> u;
   const auto p = pade_approximation<>::matching(u);
-  EXPECT_NEAR(p.force(1e-9) / 1e-9, u.mean_inverse_radius() / 2, 1e-8);
-  EXPECT_NEAR(p.torque(1e-9), u.mean_radius(), 1e-8);
-  EXPECT_NEAR(1e9 * p.torque(1e9), u.mean_square_radius() / 2, 1e-8);
+  // The limits (L) with the disk's moments ⟨r⟩ = 2/3, ⟨1/r⟩ = 2, ⟨r²⟩ = 1/2
+  // (∫₀¹ 2r^(k+1) dr): 𝓕/ε → 1, 𝓣(0) = 2/3, ε𝓣 → 1/4.
+  EXPECT_NEAR(p.force(1e-9) / 1e-9, 1.0, 1e-8);
+  EXPECT_NEAR(p.torque(1e-9), 2.0 / 3, 1e-8);
+  EXPECT_NEAR(1e9 * p.torque(1e9), 0.25, 1e-8);
   EXPECT_NEAR(p.force(1e9), 1.0, 1e-8);
   const auto wp = terminal_window(p), wu = terminal_window(u);
   EXPECT_DOUBLE_EQ(wp.lower, wu.lower);

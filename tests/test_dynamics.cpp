@@ -12,18 +12,40 @@
 
 #include <vector>
 
+#include "quadrature_moments.hpp"
+
 namespace {
 
 using namespace spinslide;
 using boost::math::relative_difference;
 namespace odeint = boost::numeric::odeint;
 
+// The pure-spinning stop time, derived: with v0 = 0 the ratio ε = v/ω stays 0,
+// so dv/dt = −𝓕(0) = 0 and γ dω/dt = −𝓣(0), where 𝓣(0) = ∬ p r dA / ∬ p dA = ⟨r⟩
+// (at ε = 0, ρ = r in the torque integral; docs/theory.md (L)): ω falls
+// linearly and reaches 0 at t* = γω0/⟨r⟩.  ⟨r⟩ comes from quadrature of the load
+// (quadrature_moments.hpp), γω0 is formed first and in long double, so that
+// neither it nor ⟨r⟩/γ over- or underflows for the extreme γ of the fuzz
+// regressions below.  StopTime.PureSpinningIsWhereTheOdeintSpinCrossesZero
+// checks the derivation on the odeint system.
+long double pure_spin_stop_time(long double mean_radius, double gamma, double w0) {
+  return static_cast<long double>(gamma) * w0 / mean_radius;
+}
+
 TEST(StopTime, PureSlidingAndPureSpinningAreExact) {
-  EXPECT_EQ(stop_time(2.5, 0.0), 2.5);                    // t* = v0
-  EXPECT_EQ(stop_time(0.0, 3.0), 0.5 * 3.0 / (2.0 / 3));  // t* = γω0/⟨r⟩
+  EXPECT_EQ(stop_time(2.5, 0.0), 2.5);  // t* = v0 (𝓕 = 1 while ω = 0)
+  // The paper's disk (γ = 1/2) and a Hertz contact: t* to the rounding of ⟨r⟩
+  // and of the quotient (the exact t* rounded, within 1 and 2 ulp).
+  const long double disk_r = spinslide_test::uniform_disk_moments().mean_radius;
+  EXPECT_LE(boost::math::epsilon_difference(stop_time(0.0, 3.0),
+                                            double(pure_spin_stop_time(disk_r, 0.5, 3.0))),
+            1);
   EXPECT_EQ(stop_time(0.0, 0.0), 0.0);
   const hertz<> h;
-  EXPECT_EQ(stop_time(h, 0.4, 0.0, 2.0), 0.4 * 2.0 / h.mean_radius());
+  const long double hertz_r = spinslide_test::hertz_moments().mean_radius;
+  EXPECT_LE(boost::math::epsilon_difference(stop_time(h, 0.4, 0.0, 2.0),
+                                            double(pure_spin_stop_time(hertz_r, 0.4, 2.0))),
+            2);
   const auto r = simulate_throw(uniform_disk<>(), 0.5, 2.0, 0.0);
   EXPECT_EQ(r.distance, 2.0);  // v0²/2
   EXPECT_EQ(r.angle, 0.0);
@@ -56,6 +78,33 @@ TEST(StopTime, ScaleInvariance) {
           << l;
     }
   }
+}
+
+// The derivation of pure_spin_stop_time, on the odeint system: from v = 0,
+// RK4 steps of dimensionless_motion (exact for the linear ω*) run until ω*
+// would cross 0; the crossing, by the slope of the last two steps, is
+// γω0/⟨r⟩, and so is stop_time.
+TEST(StopTime, PureSpinningIsWhereTheOdeintSpinCrossesZero) {
+  const hertz<> h;
+  const double gamma = 0.4, w0 = 2.0, dt = 1e-3;
+  const dimensionless_motion<hertz<>> sys(h, gamma);
+  odeint::runge_kutta4<motion_state<double>> rk4;
+  motion_state<double> x{0.0, w0, 0.0, 0.0}, next = x;
+  double before = w0, t = 0;
+  for (;;) {
+    rk4.do_step(sys, x, t, next, dt);
+    if (!(next[1] > 0)) break;
+    before = x[1];
+    x = next;
+    t += dt;
+  }
+  ASSERT_GT(t, 1.0);  // t* ≈ 1.36: over a thousand steps
+  const double crossing = t + dt * x[1] / (before - x[1]);
+  const double expected =
+      double(pure_spin_stop_time(spinslide_test::hertz_moments().mean_radius, gamma, w0));
+  EXPECT_NEAR(crossing, expected, 1e-12);
+  EXPECT_NEAR(stop_time(h, gamma, 0.0, w0), crossing, 1e-12);
+  EXPECT_EQ(x[0], 0.0);  // v stays 0
 }
 
 // Restarting from any point of a trajectory gives the remaining time.

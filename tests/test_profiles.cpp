@@ -19,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include "quadrature_moments.hpp"
 #include "reference_table.hpp"
 
 namespace {
@@ -118,27 +119,44 @@ TEST(ProfileReference, WeightedSumAndCustomProfileWithin1e13) {
 
 // ---------------------------------------------------------------- moments and limits
 
-struct moments {
-  double r, inv, sq;
-};
-
+// The moments against the defining integrals ⟨r^k⟩ = ∫ r^k w dr / ∫ w dr, by
+// long-double quadrature (quadrature_moments.hpp), not the closed forms.
 template <class P>
-void expect_moments(const P& p, moments m, const char* name) {
-  EXPECT_LE(relative_difference(p.mean_radius(), m.r), 1e-15) << name;
-  EXPECT_LE(relative_difference(p.mean_inverse_radius(), m.inv), 1e-15) << name;
-  EXPECT_LE(relative_difference(p.mean_square_radius(), m.sq), 1e-15) << name;
+void expect_moments(const P& p, const spinslide_test::load_moments& m, const char* name,
+                    double tol = 1e-15) {
+  EXPECT_LE(relative_difference(p.mean_radius(), double(m.mean_radius)), tol) << name;
+  EXPECT_LE(relative_difference(p.mean_inverse_radius(), double(m.mean_inverse_radius)), tol)
+      << name;
+  EXPECT_LE(relative_difference(p.mean_square_radius(), double(m.mean_square_radius)), tol) << name;
+}
+
+// The quadrature reference itself, against the exact values of docs/theory.md §6
+// (∫₀¹ 2r^(k+1) dr; ∫₀^(π/2) of powers of sin and cos).
+TEST(ProfileMoments, QuadratureReferenceHasTheExactValues) {
+  const long double pi_l = boost::math::constants::pi<long double>();
+  auto expect = [](const spinslide_test::load_moments& m, long double r, long double inv,
+                   long double sq, const char* name) {
+    // In long double (EXPECT_NEAR would compare doubles): 1e-18 is ~10 ulp.
+    EXPECT_LE(std::fabs(m.mean_radius - r), 1e-18L) << name;
+    EXPECT_LE(std::fabs(m.mean_inverse_radius - inv), 1e-18L) << name;
+    EXPECT_LE(std::fabs(m.mean_square_radius - sq), 1e-18L) << name;
+  };
+  expect(spinslide_test::uniform_disk_moments(), 2.0L / 3, 2, 0.5L, "uniform");
+  expect(spinslide_test::hertz_moments(), 3 * pi_l / 16, 3 * pi_l / 4, 0.4L, "hertz");
+  expect(spinslide_test::boussinesq_moments(), pi_l / 4, pi_l / 2, 2.0L / 3, "boussinesq");
+  // An annulus with no hole is the disk.
+  expect(spinslide_test::annulus_moments(0), 2.0L / 3, 2, 0.5L, "annulus(0)");
 }
 
 TEST(ProfileMoments, ClosedFormsAndQuadratureAgree) {
-  const double b = 0.125;
-  expect_moments(uniform_disk<>(), {2.0 / 3, 2, 0.5}, "uniform");
-  expect_moments(annulus<>(b),
-                 {2 * (1 - b * b * b) / (3 * (1 - b * b)), 2 / (1 + b), (1 + b * b) / 2},
-                 "annulus");
-  expect_moments(hertz<>(), {3 * pi / 16, 3 * pi / 4, 0.4}, "hertz");
-  expect_moments(boussinesq<>(), {pi / 4, pi / 2, 2.0 / 3}, "boussinesq");
+  expect_moments(uniform_disk<>(), spinslide_test::uniform_disk_moments(), "uniform");
+  for (const double b : {0.125, 0.5, 0.9})
+    expect_moments(annulus<>(b), spinslide_test::annulus_moments(b), "annulus");
+  expect_moments(hertz<>(), spinslide_test::hertz_moments(), "hertz");
+  expect_moments(boussinesq<>(), spinslide_test::boussinesq_moments(), "boussinesq");
+  // The ring is the load δ(r − 1): every moment is 1.
   expect_moments(ring<>(), {1, 1, 1}, "ring");
-  // radial_profile computes its moments by quadrature: the same numbers.
+  // radial_profile computes its moments by its own quadrature: the same numbers.
   auto h = make_radial_profile<double>([](double r) { return std::sqrt((1 - r) * (1 + r)); });
   // The rim singularity needs 1 − r exactly: the two-argument form.
   auto bq = make_radial_profile<double>(
@@ -146,18 +164,14 @@ TEST(ProfileMoments, ClosedFormsAndQuadratureAgree) {
   // With p(r) alone the lost sliver 1 − r < 1e-16 costs ~1e-8 (documented).
   auto bq1 = make_radial_profile<double>([](double r) { return 1 / std::sqrt((1 - r) * (1 + r)); });
   EXPECT_LE(relative_difference(bq1.mean_radius(), pi / 4), 1e-7);
-  EXPECT_LE(relative_difference(h.mean_radius(), 3 * pi / 16), 1e-14);
-  EXPECT_LE(relative_difference(h.mean_inverse_radius(), 3 * pi / 4), 1e-14);
-  EXPECT_LE(relative_difference(h.mean_square_radius(), 0.4), 1e-14);
-  EXPECT_LE(relative_difference(bq.mean_radius(), pi / 4), 1e-12);
-  EXPECT_LE(relative_difference(bq.mean_inverse_radius(), pi / 2), 1e-12);
-  EXPECT_LE(relative_difference(bq.mean_square_radius(), 2.0 / 3), 1e-12);
-  // Weighted sums and scaling: the moments are load-weighted means.
-  auto tt = two_tier();
-  EXPECT_LE(relative_difference(tt.mean_radius(),
-                                0.6 * (2.0 / 3) * 0.5 + 0.4 * annulus<>(0.5).mean_radius()),
-            1e-15);
-  EXPECT_LE(relative_difference(tt.mean_inverse_radius(), 0.6 * 4 + 0.4 * 2 / 1.5), 1e-15);
+  expect_moments(h, spinslide_test::hertz_moments(), "radial hertz", 1e-14);
+  expect_moments(bq, spinslide_test::boussinesq_moments(), "radial boussinesq", 1e-12);
+  // Weighted sums and scaling: the moments are load-weighted means.  The
+  // two-tier load: 60% as w = 2r/0.25 on r < 1/2, 40% as w = 2r/0.75 on 1/2 < r < 1.
+  const auto two_tier_moments = spinslide_test::moments_of(
+      {{spinslide_test::identity, [](long double r) { return 0.6L * 2 * r / 0.25L; }, 0, 0.5L},
+       {spinslide_test::identity, [](long double r) { return 0.4L * 2 * r / 0.75L; }, 0.5L, 1}});
+  expect_moments(two_tier(), two_tier_moments, "two-tier");
 }
 
 // 𝓕′(0) = ⟨1/r⟩/2, 𝓣(0) = ⟨r⟩, ε𝓣(ε) → ⟨r²⟩/2, 𝓕(∞) = 1 (docs/theory.md §6).

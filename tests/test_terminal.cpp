@@ -12,6 +12,8 @@
 #include <fstream>
 #include <string>
 
+#include "quadrature_moments.hpp"
+
 namespace {
 
 using namespace spinslide;
@@ -59,11 +61,15 @@ TEST(RatioFlow, PaperAsymptotesForHalf) {
   EXPECT_LT(ratio_flow(u, e0 + 1e-6, 0.5) - ratio_flow(u, e0 - 1e-6, 0.5), 0);
 }
 
+// f(ε)/ε → g(0) = 1 − γ⟨1/r⟩/(2⟨r⟩) as ε → 0 and g(∞) = 1 − 2γ/⟨r²⟩ as ε → ∞
+// (docs/theory.md §8), with Hertz's moments from quadrature of its load
+// (3π/4, 3π/16 and 2/5: g(0) = 1 − 2γ, g(∞) = 1 − 5γ).
 TEST(RatioFlow, GeneralGammaAsymptotes) {
   const hertz<> h;
+  const auto m = spinslide_test::hertz_moments();
   for (double g : {0.1, 0.3, 0.7}) {
-    const double a = 1 - g * h.mean_inverse_radius() / (2 * h.mean_radius());
-    const double c = 1 - 2 * g / h.mean_square_radius();
+    const double a = double(1 - g * m.mean_inverse_radius / (2 * m.mean_radius));
+    const double c = double(1 - 2 * g / m.mean_square_radius);
     EXPECT_NEAR(ratio_flow(h, 1e-6, g) / 1e-6, a, 1e-9) << g;
     EXPECT_NEAR(ratio_flow(h, 1e6, g) / 1e6, c, 1e-9) << g;
   }
