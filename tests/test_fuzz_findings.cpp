@@ -22,53 +22,6 @@ namespace {
 using namespace spinslide;
 constexpr double max_d = std::numeric_limits<double>::max();
 constexpr double min_d = std::numeric_limits<double>::min();
-const double two_over_pi = 2 / boost::math::constants::pi<double>();
-
-// fuzz_profiles: Boost's R_F and R_D return NaN for a subnormal argument, met
-// by a quadrature node within ~1e-308 of r = ε.  A thin annulus at r = 1 and
-// ε = 1 is the ring kernel at y = 0: 𝓕 = 𝓣 = 2/π.
-TEST(FuzzFindings, RingKernelAtSubnormalDistance) {
-  using P = detail::kernel_policy<boost::math::policies::policy<>>;
-  for (const double d : {5e-324, 1e-310, 1e-300}) {
-    const auto k = detail::ring_kernel(1.0 - d, 1.0, d, P());
-    EXPECT_NEAR(k.force, two_over_pi, 1e-14) << d;  // Boost R_D: ~12 ulp at y = 2e-300
-    EXPECT_NEAR(k.torque, two_over_pi, 1e-14) << d;
-  }
-  const float b = std::nextafter(1.0f, 0.0f);
-  const auto ft = annulus<float>(b).force_torque(1.0f);
-  EXPECT_NEAR(ft.force, float(two_over_pi), 1e-6f);
-  EXPECT_NEAR(ft.torque, float(two_over_pi), 1e-6f);
-}
-
-// fuzz_profiles: p = DBL_MAX overflowed tanh_sinh's sums (evaluation_error).
-// p and λp are the same profile: the uniform disk's moments and 𝓕, 𝓣.
-TEST(FuzzFindings, CustomPressureOfAnySizeIsTheSameProfile) {
-  for (const double c : {max_d, 1.0, 1e-300}) {
-    const auto p = make_radial_profile<double>([c](double) { return c; });
-    EXPECT_NEAR(p.mean_radius(), 2.0 / 3, 1e-14) << c;
-    EXPECT_NEAR(p.mean_inverse_radius(), 2.0, 1e-13) << c;
-    EXPECT_NEAR(p.mean_square_radius(), 0.5, 1e-14) << c;
-    EXPECT_NEAR(p.force(0.7), force(0.7), 1e-13) << c;
-    EXPECT_NEAR(p.torque(0.7), torque(0.7), 1e-13) << c;
-  }
-  // A support so thin that its middle rounds to 1: the pressure is asked at
-  // 1 − r = half the width, not at 1 − r = 0 (where it is infinite).
-  const double inner = std::nextafter(1.0, 0.0);
-  const auto thin = make_radial_profile<double>(
-      [](double, double one_minus_r) { return 1 / std::sqrt(one_minus_r); }, inner);
-  EXPECT_NEAR(thin.mean_radius(), 1.0, 1e-15);
-  // A total that overflows even so is the documented domain error.
-  EXPECT_THROW(make_radial_profile<double>([](double r) { return r < 0.5 ? max_d : 1e-300; }),
-               std::domain_error);
-}
-
-// fuzz_profiles: weights whose sum overflows were normalised to 0.
-TEST(FuzzFindings, WeightsWhoseSumOverflows) {
-  const auto w = make_weighted_sum<double>({max_d, max_d}, uniform_disk<double>(), ring<double>());
-  EXPECT_DOUBLE_EQ(w.weights()[0], 0.5);
-  EXPECT_DOUBLE_EQ(w.weights()[1], 0.5);
-  EXPECT_DOUBLE_EQ(w.mean_radius(), (2.0 / 3 + 1) / 2);
-}
 
 // fuzz_profiles: τ² overflowed in the elliptic cone, ⟨r⟩⟨r²⟩ in the Padé form.
 // Both torques are ≤ their 𝓣(0) and → it as ε → 0.
@@ -128,52 +81,6 @@ TEST(FuzzFindings, PadeWithAHugeMeanRadiusAtASubnormalRatio) {
     EXPECT_NEAR(ft.torque, ref.second, 4 * std::numeric_limits<double>::epsilon() * ref.second)
         << c.r << ' ' << c.sq << ' ' << c.eps;
   }
-}
-
-// fuzz_coupling: a force target among the subnormal ratios could not be
-// bracketed (evaluation_error).  𝓕 ≈ ε⟨1/r⟩/2 there.
-TEST(FuzzFindings, CouplingInverseAmongSubnormals) {
-  const boussinesq<double> b;
-  const double F = 9.88131291682493088353e-323;
-  const double e = ratio_from_force(b, F);
-  EXPECT_GT(e, 0);
-  const double linear = F / (b.mean_inverse_radius() / 2);  // 25 denorm_min: ±4% resolution
-  EXPECT_NEAR(e, linear, 0.1 * linear);
-  // A torque reached only beyond the largest double ratio: a domain error now.
-  EXPECT_THROW(ratio_from_torque(uniform_disk<double>(), 1e-320), std::domain_error);
-  // The uncoupled caps take no force in (0, 1): the jump at ε = 0 is a
-  // domain error (as documented; it returned ~0 until the campaign).
-  EXPECT_THROW(ratio_from_force(uncoupled_caps<double>(), 0.5), std::domain_error);
-}
-
-// fuzz_coupling (the campaign): a thin annulus's quadrature 𝓕 levels off at
-// 1 − 2⁻⁵², so the valid target 1 − 2⁻⁵³ was "not reached" (domain error).
-// Expected: a ratio whose 𝓕 is the target to 4 ulp.
-TEST(FuzzFindings, CouplingInverseAtTheTopOfTheForce) {
-  const annulus<double> thin(0.999999632134875304779);
-  const double target = 0.999999999999999888978;
-  const double e = ratio_from_force(thin, target);
-  EXPECT_NEAR(thin.force(e), target, 4 * std::numeric_limits<double>::epsilon());
-  EXPECT_GT(e, 1e6);  // 1 − 𝓕 ≈ 1/(4ε²) ≥ 2.5e-13 below
-  // A subnormal target of a steep 𝓕 ≈ ε/τ (τ = 0.017: 57 subnormals per
-  // step of ε) is not a jump: ε ≈ τ F to the subnormals' resolution.
-  const elliptic_limit_surface<double> cone(0.0173969741280550205254);
-  const double tiny = 3.75489890839347373574e-322;
-  EXPECT_NEAR(ratio_from_force(cone, tiny), 0.0173969741280550205254 * tiny, 2e-323);
-  // τ = 1e-10: 𝓕 steps by 1e10 subnormals per step of ε; ε ≈ τF.
-  const elliptic_limit_surface<double> steep(1.00703517801109410927e-10);
-  const double small = 5.9100901405666000387e-314;
-  EXPECT_NEAR(ratio_from_force(steep, small), 1.00703517801109410927e-10 * small, 2e-323);
-}
-
-// fuzz_coupling: the tabulated Hertz profile gave 𝓕 = 1 + 2e-15 at ε = 4.4e11.
-TEST(FuzzFindings, TabulatedForceNeverAboveOne) {
-  const tabulated_profile<double> t{hertz<double>()};
-  for (double e = 1e6; e < 1e300; e *= 3.7) {
-    ASSERT_LE(t.force(e), 1.0) << e;
-    ASSERT_LE(t.torque(1 / e), t.mean_radius()) << e;
-  }
-  EXPECT_LE(force_at_torque(t, 4.54747350886464118958e-13), 1.0);
 }
 
 // fuzz_stop_time: ∞ · 0 and ∞ − ∞ in distances and angles; a subnormal or
@@ -401,8 +308,6 @@ TEST(FuzzFindings, ForceRoundedAboveOneAtLargeRatios) {
       {0.173717571710168772192, 541249.376203841762617},
       scaled<uniform_disk<double>>(uniform_disk<double>(), 0.937500000000852762305),
       ring<double>());
-  EXPECT_LE(ann.force(std::sqrt(2.0) / 6.93531866257113469774e-88), 1.0);
-  EXPECT_LE(sum.force(3.61069398448143300918e+307 / 6.98211634151446680426e+275), 1.0);
   const std::array<double, 3> n{0, 0, 1};
   const contact_law<annulus<double>> law_a(ann, 9.99999999999999954748e-07);
   const auto a = law_a(std::array<double, 3>{1, 1, 1}, std::array<double, 3>{1, 0.556884765625, 1},

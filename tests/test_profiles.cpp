@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -291,6 +292,99 @@ TEST(ProfileErrors, BadInputIsADomainError) {
   }
 }
 
+// ---------------------------------------------------------------- regressions
+//
+// Each failure a fuzz harness (fuzz/) found in the profiles, with the input it
+// reported and an independent expectation; docs/reliability.md lists them.
+
+constexpr double max_d = std::numeric_limits<double>::max();
+constexpr double double_eps = std::numeric_limits<double>::epsilon();
+
+// fuzz_profiles: Boost's R_F and R_D return NaN for a subnormal argument, met
+// by a quadrature node within ~1e-308 of r = ε (annulus<float>(1 − 2⁻²⁴) at
+// ε = 1); guards the ring kernel's y → 0 limit.  A ring at r = ε = 1 is the
+// kernel at c = 1, where (R1) and (R2) give 𝓕 = 𝓣 = 2E(1)/π = 2/π.
+TEST(RingKernel, RegressionSubnormalDistanceToTheSplitGivesTheLimit) {
+  using P = detail::kernel_policy<boost::math::policies::policy<>>;
+  for (const double d : {5e-324, 1e-310, 1e-300}) {
+    const auto k = detail::ring_kernel(1.0 - d, 1.0, d, P());
+    EXPECT_NEAR(k.force, 2 / pi, 1e-14) << d;  // Boost R_D: ~12 ulp at y = 2e-300
+    EXPECT_NEAR(k.torque, 2 / pi, 1e-14) << d;
+  }
+  const float b = std::nextafter(1.0f, 0.0f);
+  const auto ft = annulus<float>(b).force_torque(1.0f);
+  EXPECT_NEAR(ft.force, float(2 / pi), 1e-6f);
+  EXPECT_NEAR(ft.torque, float(2 / pi), 1e-6f);
+}
+
+// fuzz_profiles: p = DBL_MAX overflowed tanh_sinh's sums (evaluation_error);
+// guards dividing a custom pressure by its value mid-support.  p and λp are
+// the same profile: the uniform disk's moments (∫₀¹ 2r^(k+1) dr) and 𝓕, 𝓣.
+TEST(RadialProfile, RegressionPressureOfAnySizeIsTheSameProfile) {
+  for (const double c : {max_d, 1.0, 1e-300}) {
+    const auto p = make_radial_profile<double>([c](double) { return c; });
+    EXPECT_NEAR(p.mean_radius(), 2.0 / 3, 1e-14) << c;
+    EXPECT_NEAR(p.mean_inverse_radius(), 2.0, 1e-13) << c;
+    EXPECT_NEAR(p.mean_square_radius(), 0.5, 1e-14) << c;
+    EXPECT_NEAR(p.force(0.7), force(0.7), 1e-13) << c;
+    EXPECT_NEAR(p.torque(0.7), torque(0.7), 1e-13) << c;
+  }
+  // A total that overflows even so is the documented domain error.
+  EXPECT_THROW(make_radial_profile<double>([](double r) { return r < 0.5 ? max_d : 1e-300; }),
+               std::domain_error);
+}
+
+// fuzz_profiles: on the support [1 − 2⁻⁵³, 1], whose middle rounds to 1, the
+// pressure was asked at 1 − r = 0 (where it is infinite); guards asking it at
+// 1 − r = half the width.  Every moment of a load on [inner, 1] lies between
+// the values of r^k at the two ends.
+TEST(RadialProfile, RegressionSupportThinnerThanItsMidpoint) {
+  const double inner = std::nextafter(1.0, 0.0);
+  const auto thin = make_radial_profile<double>(
+      [](double, double one_minus_r) { return 1 / std::sqrt(one_minus_r); }, inner);
+  EXPECT_NEAR(thin.mean_radius(), 1.0, 1e-15);
+  EXPECT_GE(thin.mean_radius(), inner);
+  EXPECT_LE(thin.mean_radius(), 1.0);
+  EXPECT_GE(thin.mean_inverse_radius(), 1.0);
+  EXPECT_LE(thin.mean_inverse_radius(), 1 / inner);
+  EXPECT_GE(thin.mean_square_radius(), inner * inner);
+  EXPECT_LE(thin.mean_square_radius(), 1.0);
+}
+
+// fuzz_profiles: weights whose sum overflows were normalised to 0; guards
+// dividing by the largest weight first.  Equal weights: the mean of the disk's
+// and the ring's moments (2/3, 2, 1/2 and 1, 1, 1) and of their 𝓕, 𝓣.
+TEST(WeightedSum, RegressionWeightsWhoseSumOverflows) {
+  const auto w = make_weighted_sum<double>({max_d, max_d}, uniform_disk<double>(), ring<double>());
+  EXPECT_DOUBLE_EQ(w.weights()[0], 0.5);
+  EXPECT_DOUBLE_EQ(w.weights()[1], 0.5);
+  EXPECT_DOUBLE_EQ(w.mean_radius(), (2.0 / 3 + 1) / 2);
+  EXPECT_DOUBLE_EQ(w.mean_inverse_radius(), (2.0 + 1) / 2);
+  EXPECT_DOUBLE_EQ(w.mean_square_radius(), (0.5 + 1) / 2);
+  EXPECT_DOUBLE_EQ(w.force(0.7), (force(0.7) + ring<double>().force(0.7)) / 2);
+  EXPECT_DOUBLE_EQ(w.torque(0.7), (torque(0.7) + ring<double>().torque(0.7)) / 2);
+}
+
+// fuzz_contact (the campaign of 2026-11-23): 𝓕 of a ring-quadrature annulus
+// and of a weighted sum rounded to 1 + 2⁻⁵² at a large ratio (and μN𝓕
+// overflowed in the contact law: ContactLaw.RegressionForceOfAProfileRoundedAboveOne);
+// guards the clamp 𝓕 ≤ 1 after general().  1 − 𝓕 ≈ ⟨r²⟩/(4ε²) ((R1): f_F =
+// (2/π)E(r/ε) ≈ 1 − r²/(4ε²)) is far below an ulp at ε = 2e87 and 5e31: 𝓕 is
+// 1 to rounding, within the 2 ulp (1 − 2⁻⁵²) at which the ring quadrature
+// levels off.
+TEST(Annulus, RegressionForceRoundedAboveOneAtLargeRatios) {
+  const annulus<double> ann(0.635197164334527664131);
+  const auto sum = make_weighted_sum<double>(
+      {0.173717571710168772192, 541249.376203841762617},
+      scaled<uniform_disk<double>>(uniform_disk<double>(), 0.937500000000852762305),
+      ring<double>());
+  for (const double f : {ann.force(std::sqrt(2.0) / 6.93531866257113469774e-88),
+                         sum.force(3.61069398448143300918e+307 / 6.98211634151446680426e+275)}) {
+    EXPECT_LE(f, 1.0);
+    EXPECT_GE(f, 1 - double_eps);
+  }
+}
+
 // ---------------------------------------------------------------- coupling curve
 
 template <class P>
@@ -345,6 +439,62 @@ TEST(Coupling, OutOfRangeIsADomainError) {
   for (double T : {0.0, -1.0, 2.0 / 3 + 1e-9, double(NAN)})
     EXPECT_THROW(ratio_from_torque(u, T), std::domain_error) << T;
   EXPECT_THROW(torque_at_force(u, 1.0), std::domain_error);
+}
+
+// fuzz_coupling: a force target among the subnormal ratios could not be
+// bracketed (evaluation_error); guards the bracket [0, ε] there.  Boussinesq's
+// 𝓕 is exactly πε/4 for ε ≤ 1 (B2), so the ratio is 4F/π to the resolution of
+// the subnormals (one denorm_min in ε moves 𝓕 by π/4 of one).
+TEST(Coupling, RegressionForceTargetAmongSubnormalRatios) {
+  const boussinesq<double> b;
+  const double dmin = std::numeric_limits<double>::denorm_min();
+  const double F = 9.88131291682493088353e-323;  // 20 denorm_min
+  const double e = ratio_from_force(b, F);
+  EXPECT_NEAR(e, 4 * F / pi, 1.5 * dmin);
+  EXPECT_NEAR(b.force(e), F, dmin);
+}
+
+// fuzz_coupling: a torque reached only beyond the largest double ratio
+// returned a wrong ratio; guards the domain error.  For the disk 𝓣 > 0 falls
+// to 𝓣(DBL_MAX) ≈ 1/(4 DBL_MAX) = 1.4e-309 (ε𝓣 → ⟨r²⟩/2 = 1/4), above the
+// target 1e-320.
+TEST(Coupling, RegressionTorqueBeyondTheLargestRatioIsADomainError) {
+  ASSERT_GT(0.25 / max_d, 1e-320);
+  EXPECT_THROW(ratio_from_torque(uniform_disk<double>(), 1e-320), std::domain_error);
+}
+
+// fuzz_coupling (writing the campaign's regression test): the uncoupled caps
+// (𝓕 = 0 at ε = 0, 1 for every ε > 0) returned ε ≈ 0 for 𝓕 = 1/2; guards the
+// documented domain error for a target inside the jump.
+TEST(Coupling, RegressionForceInsideTheJumpOfUncoupledCapsIsADomainError) {
+  EXPECT_THROW(ratio_from_force(uncoupled_caps<double>(), 0.5), std::domain_error);
+}
+
+// fuzz_coupling (the campaign): a thin annulus's quadrature 𝓕 levels off at
+// 1 − 2⁻⁵², so the valid target 1 − 2⁻⁵³ was "not reached" (domain error);
+// guards answering a target within 4 ulp of that level.  Expected: a ratio
+// whose 𝓕 is the target to 4 ulp, and large, since 1 − 𝓕 ≈ ⟨r²⟩/(4ε²) ≈ 1/(4ε²)
+// is still 2.5e-13 at ε = 1e6.
+TEST(Coupling, RegressionForceTargetAtTheTopOfAThinAnnulus) {
+  const annulus<double> thin(0.999999632134875304779);
+  const double target = 0.999999999999999888978;
+  const double e = ratio_from_force(thin, target);
+  EXPECT_NEAR(thin.force(e), target, 4 * double_eps);
+  EXPECT_GT(e, 1e6);
+}
+
+// fuzz_coupling (the campaign, twice): subnormal targets of a steep elliptic
+// cone were rejected as a jump; guards telling a steep 𝓕 from a jump.  The
+// cone's 𝓕 = ε/√(ε² + τ²) (on the ellipse 𝓕² + 𝓣²/τ² = 1 with normal along
+// (ε, 1)) is ε/τ for ε ≪ τ: ε = τF to the subnormals' resolution.
+TEST(Coupling, RegressionSubnormalForceTargetsOfASteepEllipticCone) {
+  // τ = 0.017: 57 subnormals of 𝓕 per step of ε.
+  const double tau = 0.0173969741280550205254, tiny = 3.75489890839347373574e-322;
+  EXPECT_NEAR(ratio_from_force(elliptic_limit_surface<double>(tau), tiny), tau * tiny, 2e-323);
+  // τ = 1e-10: 𝓕 steps by 1e10 subnormals per step of ε.
+  const double steep = 1.00703517801109410927e-10, small = 5.9100901405666000387e-314;
+  EXPECT_NEAR(ratio_from_force(elliptic_limit_surface<double>(steep), small), steep * small,
+              2e-323);
 }
 
 // ---------------------------------------------------------------- the paper's CD
@@ -421,6 +571,26 @@ TEST(Tabulated, SharedBetweenThreadsGivesTheSerialResults) {
     });
   for (auto& th : threads) th.join();
   for (const auto& o : out) EXPECT_EQ(o, serial);
+}
+
+// fuzz_coupling: the tabulated Hertz profile gave 𝓕 = 1 + 2e-15 at ε = 4.4e11;
+// guards the clamp of the tabulated 𝓕 to ≤ 1 and 𝓣 to ≤ ⟨r⟩.  Expected, to
+// the table's 1e-10 (Tabulated.Within1e10EverywhereForEveryProfile), the
+// limits (L) with Hertz's moments (⟨r²⟩ = 2/5, ⟨r⟩ = 3π/16, ⟨1/r⟩ = 3π/4):
+// 1 − 𝓕(ε) ≈ ⟨r²⟩/(4ε²) = 0.1/ε² and 𝓣(δ) ≈ ⟨r⟩ − δ²⟨1/r⟩/4 (f_T = (2/π) r E(δ/r)).
+TEST(Tabulated, RegressionHertzForceNeverAboveOne) {
+  const tabulated_profile<double> t{hertz<double>()};
+  const auto m = spinslide_test::hertz_moments();
+  for (double e = 1e6; e < 1e300; e *= 3.7) {
+    ASSERT_LE(t.force(e), 1.0) << e;
+    ASSERT_NEAR(t.force(e), double(1 - m.mean_square_radius / 4 / e / e), 1e-10) << e;
+    ASSERT_LE(t.torque(1 / e), t.mean_radius()) << e;
+    ASSERT_NEAR(t.torque(1 / e), double(m.mean_radius), 1e-10 * double(m.mean_radius)) << e;
+  }
+  // 𝓣 = 4.5e-13 is reached at ε ≈ ⟨r²⟩/(2𝓣) = 4.4e11, where 1 − 𝓕 ≈ 5e-25.
+  const double F = force_at_torque(t, 4.54747350886464118958e-13);
+  EXPECT_LE(F, 1.0);
+  EXPECT_NEAR(F, 1.0, 1e-10);
 }
 
 }  // namespace
