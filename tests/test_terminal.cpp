@@ -10,6 +10,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include "quadrature_moments.hpp"
@@ -162,6 +163,25 @@ TEST(TerminalMotion, BadInputIsADomainError) {
   EXPECT_THROW(ratio_flow(u, -1.0, 0.5), std::domain_error);
   EXPECT_THROW(ratio_flow(u, double(NAN), 0.5), std::domain_error);
   EXPECT_THROW(terminal_motion(u, 0.5, -1.0), std::domain_error);
+}
+
+// fuzz_terminal: a Padé form's 𝓣 underflowed to 0 at ε = 1e300, so the flow
+// g = 1 − γ𝓕/(ε𝓣) was −∞ there, a false zero was bracketed and
+// terminal_motion evaluated 𝓕 at a NaN ratio; guards detail::flow_terms_at
+// (𝓕/ε and ε𝓣 take their limits where 𝓕 or 𝓣 is not a normal number).
+// Expected from the moments alone (docs/theory.md §8): g(0) = 1 − γ⟨1/r⟩/(2⟨r⟩)
+// > 0 and g(∞) = 1 − 2γ/⟨r²⟩ > 0, so ε → ∞ from any start: pure sliding.
+TEST(TerminalMotion, RegressionPadeFormWithExtremeMomentsSlides) {
+  const pade_approximation<double> p(2922, 765, 1.7e-9);
+  const double gamma = 2.2e-16;
+  ASSERT_GT(1 - gamma * 765 / (2 * 2922.0), 0);
+  ASSERT_GT(1 - 2 * gamma / 1.7e-9, 0);
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const auto& t : {terminal_motion(p, gamma, 1e132), terminal_motion(p, gamma),
+                        terminal_motion(p, gamma, 1e-300)}) {
+    EXPECT_EQ(t.regime, terminal_regime::pure_sliding);
+    EXPECT_EQ(t.ratio, inf);
+  }
 }
 
 }  // namespace
