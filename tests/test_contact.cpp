@@ -8,9 +8,14 @@
 
 #include <boost/math/special_functions/relative_difference.hpp>
 
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
+
+#include "quadrature_moments.hpp"
 
 namespace {
 
@@ -166,6 +171,186 @@ TEST(ContactLaw, BadInputIsADomainError) {
   EXPECT_THROW(law(vec2{1, 0}, std::nan(""), 0.1, 1.0, 0.5), std::domain_error);
   EXPECT_THROW(law(vec2{1, 0}, 1.0, 0.1, std::nan(""), 0.5), std::domain_error);
   EXPECT_THROW(contact_law<>(uniform_disk<>(), -1.0), std::domain_error);
+}
+
+// ---------------------------------------------------------------- regressions
+//
+// Each failure a fuzz harness (fuzz/) found in the contact law, with the
+// input it reported; docs/reliability.md lists them.  The expectations are
+// the law as documented (contact.hpp): F = −μN𝓕(ε) v̂ and T = −μN a 𝓣(ε)
+// sign(ω) n̂ with ε = |v_t|/(a|ω_n|), scaled by min(1, ρ/v_s) where ρ =
+// √(|v_t|² + (aω_n)²), evaluated in long double or cpp_bin_float_50.
+
+constexpr double max_d = std::numeric_limits<double>::max();
+constexpr double double_eps = std::numeric_limits<double>::epsilon();
+
+// fuzz_contact: f/|v| overflowed for a tiny 3-D sliding speed (NaN force);
+// guards −f (v/|v|).  ω = 0: ε = ∞, 𝓕 = 1 and 𝓣 = 0, and ρ = |v| = 1e-322
+// is below v_s: F = −μN (|v|/v_s) x̂.
+TEST(ContactLaw, RegressionTinySlidingSpeedIn3D) {
+  const contact_law<> law;
+  const double v = 9.88131291682493088353e-323, N = 8.98846567431157854073e+307,
+               mu = 4.58359719837098179601e-05;
+  const auto r = law(vec3{v, 0, 0}, vec3{0, 0, 0}, vec3{0, 0, 1}, 1.0, N, mu);
+  const double expected =
+      -double(static_cast<long double>(mu) * N * v / law.velocity_scale());  // −4.1e-13
+  EXPECT_NEAR(r.force[0], expected, 4 * double_eps * -expected);
+  EXPECT_EQ(r.force[1], 0);
+  EXPECT_EQ(r.force[2], 0);
+  for (const double t : r.torque) EXPECT_EQ(t, 0);
+}
+
+// fuzz_contact: μN a overflowed times 𝓣 = 0 (planar, no spin: NaN torque);
+// guards (μN s)(a𝓣).  ω = 0: 𝓣(∞) = 0 and 𝓕 = 1, and ρ = |v| = 3.4e-13 < v_s:
+// F = −μN (|v|/v_s) x̂, T = 0.
+TEST(ContactLaw, RegressionOverflowingLoadAndRadiusWithoutSpin) {
+  const contact_law<> law;
+  const double v = 3.4e-13, mu = 0.156875143087110618945;
+  const auto r = law(vec2{v, 0}, 0.0, max_d, max_d, mu);
+  EXPECT_EQ(r.torque, 0);
+  const double expected = -double(static_cast<long double>(mu) * max_d * v / law.velocity_scale());
+  EXPECT_NEAR(r.force[0], expected, 4 * double_eps * -expected);
+  EXPECT_EQ(r.force[1], 0);
+}
+
+// fuzz_contact (the 1e7-input campaign): μN s underflowed to 0 where a𝓣
+// overflows (NaN torque); guards detail::product.  Expected: the same law at
+// a/c and ω c, times c (the torque is ∝ a at fixed aω; c = 2^600 keeps every
+// product normal), and the law itself: the cone's 𝓣 = τ²/√(ε² + τ²) (on the
+// ellipse 𝓕² + 𝓣²/τ² = 1 with normal along (ε, 1)), scaled by ρ/v_s.
+TEST(ContactLaw, RegressionTorqueOfAnUnderflowingLoadAtAnOverflowingRadius) {
+  const double vs = 8.98846567431157854073e+307, a = 8.98846567431157854073e+307,
+               tau = 174827.100707625766518;
+  const contact_law<elliptic_limit_surface<double>> law(elliptic_limit_surface<double>(tau), vs);
+  const vec2 v{7.82232238000716571555e-24, 1.1956970914634861867e-258};
+  const double spin = 2.71736105212685599297e-322, N = 2.22044604925031308085e-16,
+               mu = 0.0444809783472058864473;
+  const double c = std::ldexp(1.0, 600);
+  const auto r = law(v, spin, a, N, mu);
+  const auto scaled = law(v, spin * c, a / c, N, mu);
+  ASSERT_TRUE(std::isfinite(r.torque));
+  EXPECT_LT(r.torque, 0);
+  EXPECT_NEAR(r.torque / (scaled.torque * c), 1, 1e-14);
+  using big = boost::multiprecision::cpp_bin_float_50;
+  const big speed = sqrt(big(v[0]) * v[0] + big(v[1]) * v[1]), rim = big(a) * spin;
+  const big eps = speed / rim, rho = sqrt(speed * speed + rim * rim);
+  const big T = big(tau) * tau / sqrt(eps * eps + big(tau) * tau);
+  const double expected = -static_cast<double>(big(mu) * N * a * T * (rho / vs));
+  EXPECT_NEAR(r.torque, expected, 1e-14 * -expected);
+}
+
+// fuzz_contact (the 1e7-input campaign): v·n overflowed for velocity
+// components near the largest value, so a finite tangential velocity was
+// reported as an infinite speed (domain error); guards the projection in units
+// of the largest component.  Expected: the result of v/1024 (ε is finite and
+// the caps' 𝓕 = 1, 𝓣 = τ at any finite ε > 0), and the law itself:
+// F = −μN v_t/|v_t|, T = −μN a τ n (ω·n > 0), with v_t = v − (v·n)n.
+TEST(ContactLaw, RegressionTangentialProjectionNearTheLargestValue) {
+  const double tau = 36827858.5685185343027;
+  const contact_law<uncoupled_caps<double>> law(uncoupled_caps<double>(tau), 1e-6);
+  const double th = 0.88733783351099559944, ph = 0.000766989708598497842498;
+  const vec3 n{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
+  const vec3 w{1.00000000000000022204, max_d, 0.666666666666666629659};
+  const double a = 6.36050773210021198955e-300, N = 0.0549016181728579980015, mu = max_d;
+  const vec3 v{max_d, -6.26433498638888716604e+194, max_d};
+  const auto r = law(v, w, n, a, N, mu);
+  const auto scaled = law(vec3{v[0] / 1024, v[1] / 1024, v[2] / 1024}, w, n, a, N, mu);
+  using big = boost::multiprecision::cpp_bin_float_50;
+  big vn = 0, wn = 0, vt_len2 = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    vn += big(v[i]) * n[i];
+    wn += big(w[i]) * n[i];
+  }
+  std::array<big, 3> vt;
+  for (std::size_t i = 0; i < 3; ++i) {
+    vt[i] = v[i] - vn * n[i];
+    vt_len2 += vt[i] * vt[i];
+  }
+  ASSERT_GT(wn, 0);
+  const big muN = big(mu) * N, vt_len = sqrt(vt_len2);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(r.force[i], scaled.force[i], 1e-14 * mu * N) << i;
+    EXPECT_EQ(r.torque[i], scaled.torque[i]) << i;
+    EXPECT_NEAR(r.force[i], static_cast<double>(-muN * vt[i] / vt_len), 1e-14 * mu * N) << i;
+    const double t = static_cast<double>(-muN * a * tau * n[i]);
+    EXPECT_NEAR(r.torque[i], t, 1e-14 * std::fabs(t)) << i;
+  }
+}
+
+// fuzz_contact (the campaign): with subnormal velocity components v/|v| was
+// a quotient of subnormals and |F| exceeded μN by 0.3%; guards v/|v| in units
+// of the largest component.  v = (20, 61) times the smallest subnormal and no
+// spin: 𝓕 = 1 along the direction (20, 61)/√(20² + 61²), and 𝓣(∞) = 0.
+TEST(ContactLaw, RegressionDirectionOfASubnormalVelocity) {
+  const double d = std::numeric_limits<double>::denorm_min();
+  const double N = 1.16923918684000595184e-228, mu = 0.685007878938989844819;
+  const contact_law<boussinesq<double>> law(boussinesq<double>(), 0.0);
+  const auto r = law(vec2{20 * d, 61 * d}, 0.0, 1.31672823561030010652e-38, N, mu);
+  const double len = std::hypot(20.0, 61.0);
+  EXPECT_NEAR(r.force[0] / (mu * N), -20 / len, 1e-15);
+  EXPECT_NEAR(r.force[1] / (mu * N), -61 / len, 1e-15);
+  EXPECT_EQ(r.torque, 0);
+}
+
+// fuzz_contact (sanitize preset): a NaN velocity component beside a zero one
+// gave |v| = 0 (std::max drops the NaN), so no domain error; guards |v| = NaN
+// for a NaN component.
+TEST(ContactLaw, RegressionNaNVelocityComponentBesideAZero) {
+  const contact_law<> law;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(law(vec2{0, nan}, 0.0, 2.0, 0.5, 2.0 / 3), std::domain_error);
+  EXPECT_THROW(law(vec3{0, nan, 0}, vec3{0, 0, 0}, vec3{0, 0, 1}, 2.0, 0.5, 2.0 / 3),
+               std::domain_error);
+}
+
+// fuzz_contact (the campaign of 2026-11-23): 𝓕 of a ring-quadrature annulus
+// and of a weighted sum rounded to 1 + 2⁻⁵² at a large ratio, so μN𝓕
+// overflowed to ∞ for μN = DBL_MAX and the 3-D force had a NaN component
+// (∞ · 0 along the normal); guards the clamp 𝓕 ≤ 1 (the profiles' side:
+// Annulus.RegressionForceRoundedAboveOneAtLargeRatios).  At ε = 2e87 and
+// 5e31, 𝓕 = 1 to rounding (within 2 ulp, the quadrature's level) and
+// ε𝓣 = ⟨r²⟩/2 (the limits (L)), so F = −μN v_t/|v_t| and
+// T = −sign(ω_n) μN a ⟨r²⟩/(2ε), with ⟨r²⟩ by quadrature of each load.
+TEST(ContactLaw, RegressionForceOfAProfileRoundedAboveOne) {
+  const double b = 0.635197164334527664131, scale = 0.937500000000852762305;
+  const double w1 = 0.173717571710168772192, w2 = 541249.376203841762617;
+  const annulus<double> ann(b);
+  const auto sum = make_weighted_sum<double>(
+      {w1, w2}, scaled<uniform_disk<double>>(uniform_disk<double>(), scale), ring<double>());
+  const vec3 n{0, 0, 1};
+  const double a_ann = 6.93531866257113469774e-88;
+  const contact_law<annulus<double>> law_a(ann, 9.99999999999999954748e-07);
+  const auto a = law_a(vec3{1, 1, 1}, vec3{1, 0.556884765625, 1}, n, a_ann, max_d, 1.0);
+  const double a_sum = 0.999999999999999888978, v0 = 0.666666666666666629659,
+               v1 = 3.61069398448143300918e+307, w_n = -6.98211634151446680426e+275;
+  const contact_law<decltype(sum)> law_s(sum, 0.666666666666666629659);
+  const auto s =
+      law_s(vec3{v0, v1, 0.666666666666666629659}, vec3{max_d, 0, w_n}, n, a_sum, 1.0, max_d);
+  for (const auto* f : {&a.force, &s.force}) {
+    EXPECT_TRUE(std::isfinite((*f)[0]) && std::isfinite((*f)[1]) && (*f)[2] == 0);
+    // |F| ≤ μN = DBL_MAX, in units of it.
+    EXPECT_LE(std::hypot((*f)[0] / max_d, (*f)[1] / max_d), 1.0);
+  }
+  const double e = 4 * double_eps;
+  // The annulus: v_t = (1, 1), ω_n = 1, ε = √2/a = 2e87.
+  EXPECT_NEAR(a.force[0] / max_d, -1 / std::sqrt(2.0), e);
+  EXPECT_NEAR(a.force[1] / max_d, -1 / std::sqrt(2.0), e);
+  const long double sq_ann = spinslide_test::annulus_moments(b).mean_square_radius;
+  const long double t_ann = -max_d * (static_cast<long double>(a_ann) * a_ann) * sq_ann /
+                            (2 * std::sqrt(2.0L));  // μN a ⟨r²⟩/(2ε), ε = √2/a
+  EXPECT_NEAR(a.torque[2], double(t_ann), 1e-12 * -double(t_ann));
+  // The sum: v_t = (v0, v1), ε = |v_t|/(a|ω_n|) = 5e31; the moments of a
+  // weighted sum are the load-weighted means, of a scaled disk a²/2.
+  const double dir0 = v0 / v1;  // v₀/|v|
+  EXPECT_NEAR(s.force[0] / max_d, -dir0, e * dir0);
+  EXPECT_NEAR(s.force[1] / max_d, -1.0, e);
+  const long double sq_sum = (w1 * (static_cast<long double>(scale) * scale *
+                                    spinslide_test::uniform_disk_moments().mean_square_radius) +
+                              w2 * 1.0L) /
+                             (static_cast<long double>(w1) + w2);
+  const long double t_sum = max_d * static_cast<long double>(a_sum) * a_sum * -w_n * sq_sum /
+                            (2 * std::hypot(static_cast<long double>(v0), v1));
+  EXPECT_NEAR(s.torque[2], double(t_sum), 1e-12 * double(t_sum));
 }
 
 }  // namespace
