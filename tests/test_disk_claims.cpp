@@ -16,6 +16,7 @@
 #include <boost/math/special_functions/relative_difference.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <limits>
@@ -291,8 +292,25 @@ TEST(Types, IntegerArgumentsPromoteToDouble) {
   EXPECT_EQ(spinslide::torque(3u), spinslide::torque(3.0));
 }
 
+// Within 2 ulp of the reference rounded to Real, or 2 denorm_min where the
+// result is subnormal.
+template <class Real>
+::testing::AssertionResult close_to(Real got, const mp& reference) {
+  using lim = std::numeric_limits<Real>;
+  const Real want = static_cast<Real>(reference);
+  using std::fabs;
+  if (fabs(got - want) <= (std::max)(2 * lim::epsilon() * fabs(want), 2 * lim::denorm_min()))
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << got << " where the reference is " << want;
+}
+
 // Valid input never throws and never returns a non-finite value, including the
-// extremes of each type and the neighbours of 1.
+// extremes of each type and the neighbours of 1.  Where ε is so small or so
+// large that the next term of the series is below an ulp, the four functions
+// are the leading terms (S2 and docs/theory.md §8): for ε ≤ √ε_mach/4,
+// 𝓕 = ε(1 − ε²/8), 𝓣 = 2/3 − ε²/2, 𝓕′ = 1 − 3ε²/8; for ε ≥ 4/√ε_mach,
+// 𝓕 = 1 − 1/(8ε²), 𝓣 = (1 + 1/(12ε²))/(4ε), 𝓕′ = 1/(4ε³); and 𝓣′ = −ε𝓕′
+// (I2), all evaluated in cpp_bin_float_50.
 template <class Real>
 void sweep_extremes() {
   using lim = std::numeric_limits<Real>;
@@ -320,6 +338,26 @@ void sweep_extremes() {
     ASSERT_LE(v[0], 1);
     ASSERT_GE(v[1], 0);
     ASSERT_LE(v[1], Real(2) / 3);
+    using std::sqrt;
+    const Real root = sqrt(lim::epsilon());
+    const mp E(e);
+    mp F, T, dF;
+    if (e <= root / 4) {
+      F = E * (1 - E * E / 8);
+      T = mp(2) / 3 - E * E / 2;
+      dF = 1 - 3 * E * E / 8;
+    } else if (e >= 4 / root) {
+      F = 1 - 1 / (8 * E * E);
+      T = (1 + 1 / (12 * E * E)) / (4 * E);
+      dF = 1 / (4 * E * E * E);
+    } else {
+      continue;
+    }
+    EXPECT_TRUE(close_to(v[0], F)) << "force at " << e;
+    EXPECT_TRUE(close_to(v[1], T)) << "torque at " << e;
+    EXPECT_TRUE(close_to(v[2], dF)) << "force_derivative at " << e;
+    EXPECT_TRUE(close_to(v[3], mp(-E * dF))) << "torque_derivative at " << e;
+    EXPECT_TRUE(close_to(v[4], T)) << "force_torque at " << e;
   }
 }
 

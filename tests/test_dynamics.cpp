@@ -156,6 +156,12 @@ TEST(SimultaneousStop, OutsideTheWindowTheRatioRunsAway) {
   EXPECT_LT(ratio[ratio.size() - 2], 1e-6);
 }
 
+// The step count stays bounded, and t* lies within the bounds that the
+// friction curve gives for any profile: v falls at most at rate 𝓕 ≤ 1 and ω at
+// most at rate 𝓣/γ ≤ ⟨r⟩/γ, so t* ≥ max(v0, γω0/⟨r⟩); and 𝓣(𝓕) is concave
+// (its slope −ε decreases, (I2)) from (0, ⟨r⟩) to (1, 0), so 𝓣 ≥ ⟨r⟩(1 − 𝓕)
+// and u = v + γω/⟨r⟩ falls at least at rate 1 (also once one motion has
+// stopped): t* ≤ v0 + γω0/⟨r⟩.  The disk's ⟨r⟩ = 2/3.
 TEST(SimultaneousStop, WorkIsBoundedAtTheWindowEdges) {
   const uniform_disk<> u;
   for (double g :
@@ -164,7 +170,9 @@ TEST(SimultaneousStop, WorkIsBoundedAtTheWindowEdges) {
       int steps = 0;
       const auto r = simulate_throw(u, g, ei, 1.0, [&](const motion_sample<double>&) { ++steps; });
       EXPECT_TRUE(std::isfinite(r.time)) << g << " " << ei;
-      EXPECT_GT(r.time, 0);
+      const double spin_alone = g * 1.0 / (2.0 / 3);
+      EXPECT_GE(r.time, std::max(ei, spin_alone) * (1 - 1e-12)) << g << " " << ei;
+      EXPECT_LE(r.time, (ei + spin_alone) * (1 + 1e-12)) << g << " " << ei;
       EXPECT_LT(steps, 20000) << g << " " << ei;
     }
   }
