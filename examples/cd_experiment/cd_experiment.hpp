@@ -57,6 +57,7 @@
 #include <string>
 #include <vector>
 
+#include "../../tools/least_squares.hpp"
 #include "../gnuplot.hpp"
 
 namespace cd_experiment {
@@ -153,25 +154,13 @@ inline throws_t read_frames(const std::string& path) {
 // Least-squares parabola through (t_i, y_i): value, slope and curvature at tc.
 inline std::array<double, 3> parabola(const std::vector<double>& t, const std::vector<double>& y,
                                       double tc) {
-  double S[5] = {0, 0, 0, 0, 0}, B[3] = {0, 0, 0};
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    const double u = t[i] - tc;
-    double p = 1;
-    for (int k = 0; k < 5; ++k, p *= u) {
-      S[k] += p;
-      if (k < 3) B[k] += p * y[i];
-    }
+  std::vector<std::vector<double>> A;
+  for (const double ti : t) {
+    const double u = ti - tc;
+    A.push_back({1, u, u * u});
   }
-  // Normal equations [S0 S1 S2; S1 S2 S3; S2 S3 S4] c = B, by Cramer's rule.
-  auto det = [](double a, double b, double c, double d, double e, double f, double gg, double h,
-                double i) {
-    return a * (e * i - f * h) - b * (d * i - f * gg) + c * (d * h - e * gg);
-  };
-  const double D = det(S[0], S[1], S[2], S[1], S[2], S[3], S[2], S[3], S[4]);
-  const double c0 = det(B[0], S[1], S[2], B[1], S[2], S[3], B[2], S[3], S[4]) / D;
-  const double c1 = det(S[0], B[0], S[2], S[1], B[1], S[3], S[2], B[2], S[4]) / D;
-  const double c2 = det(S[0], S[1], B[0], S[1], S[2], B[1], S[2], S[3], B[2]) / D;
-  return {c0, c1, 2 * c2};
+  const std::vector<double> c = spinslide_tools::least_squares(A, y);
+  return {c[0], c[1], 2 * c[2]};
 }
 
 struct measured {
@@ -214,14 +203,19 @@ inline int analyse(const throws_t& throws, const std::string& dir, bool simulate
     std::fprintf(stderr, "cd_experiment: fewer than 3 usable throws\n");
     return 1;
   }
-  // μ(n) = a + b n by least squares over both estimates of every throw.
-  double S0 = 0, S1 = 0, S2 = 0, T0 = 0, T1 = 0;
+  // μ(n) = a + b n by least squares over both estimates of every throw; the
+  // standard errors from σ² (XᵀX)⁻¹, XᵀX = [S0 S1; S1 S2].
+  std::vector<std::vector<double>> X;
+  std::vector<double> mus;
+  double S0 = 0, S1 = 0, S2 = 0;
   for (const auto& r : m)
     for (const double mu : {r.mu_from_force, r.mu_from_torque}) {
-      S0 += 1, S1 += r.n, S2 += double(r.n) * r.n, T0 += mu, T1 += r.n * mu;
+      X.push_back({1, double(r.n)});
+      mus.push_back(mu);
+      S0 += 1, S1 += r.n, S2 += double(r.n) * r.n;
     }
-  const double D = S0 * S2 - S1 * S1;
-  const double a = (S2 * T0 - S1 * T1) / D, b = (S0 * T1 - S1 * T0) / D;
+  const std::vector<double> fit = spinslide_tools::least_squares(X, mus);
+  const double a = fit[0], b = fit[1], D = S0 * S2 - S1 * S1;
   double rss = 0;
   for (const auto& r : m)
     for (const double mu : {r.mu_from_force, r.mu_from_torque})
