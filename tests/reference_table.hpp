@@ -16,12 +16,12 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
+
+#include "reference/csv.hpp"
 
 namespace spinslide_test {
 
@@ -32,17 +32,11 @@ struct reference_row {
 };
 
 inline std::vector<reference_row> load_disk_reference(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open reference table " + path);
   std::vector<reference_row> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line.rfind("eps_hex", 0) == 0) continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) f.push_back(cell);
-    if (f.size() != 7) throw std::runtime_error("malformed reference row: " + line);
+  for (const auto& f : spinslide_reference::read_csv_rows(path, "eps_hex")) {
+    if (f.size() != 7)
+      throw std::runtime_error("malformed reference row in " + path +
+                               " at eps = " + (f.empty() ? std::string("?") : f[0]));
     rows.push_back({std::strtod(f[0].c_str(), nullptr), f[2] == "1", f[3], f[4], f[5], f[6]});
   }
   return rows;

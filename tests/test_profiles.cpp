@@ -12,15 +12,14 @@
 #include <boost/math/special_functions/relative_difference.hpp>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "quadrature_moments.hpp"
+#include "reference/csv.hpp"
 #include "reference_table.hpp"
 
 namespace {
@@ -36,22 +35,11 @@ struct ref_point {
 const std::map<std::string, std::vector<ref_point>>& reference() {
   static const auto table = [] {
     std::map<std::string, std::vector<ref_point>> t;
-    std::ifstream in(SPINSLIDE_PROFILE_REFERENCE);
-    if (!in) throw std::runtime_error("cannot open " SPINSLIDE_PROFILE_REFERENCE);
-    std::string line;
-    while (std::getline(in, line)) {
-      if (line.empty() || line[0] == '#' || line.rfind("profile,", 0) == 0) continue;
-      std::stringstream ss(line);
-      std::string name, hex, dec, f, tq;
-      std::getline(ss, name, ',');
-      std::getline(ss, hex, ',');
-      std::getline(ss, dec, ',');
-      std::getline(ss, f, ',');
-      std::getline(ss, tq, ',');
-      t[name].push_back({std::strtod(hex.c_str(), nullptr),
-                         static_cast<double>(std::strtold(f.c_str(), nullptr)),
-                         static_cast<double>(std::strtold(tq.c_str(), nullptr))});
-    }
+    // profile,eps_hex,eps,force,torque
+    for (const auto& f : spinslide_reference::read_csv_rows(SPINSLIDE_PROFILE_REFERENCE, "profile"))
+      t[f.at(0)].push_back({std::strtod(f.at(1).c_str(), nullptr),
+                            static_cast<double>(std::strtold(f.at(3).c_str(), nullptr)),
+                            static_cast<double>(std::strtold(f.at(4).c_str(), nullptr))});
     // The uniform disk's own area-integral table (the 2-D profile generator
     // was checked against it to 5e-28).
     for (const auto& r : spinslide_test::load_disk_reference(SPINSLIDE_DISK_REFERENCE))

@@ -9,11 +9,12 @@
 #include <boost/math/special_functions/relative_difference.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include <fstream>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "quadrature_moments.hpp"
+#include "reference/csv.hpp"
 
 namespace {
 
@@ -23,11 +24,10 @@ using mp = boost::multiprecision::cpp_bin_float_50;
 // ε₀ from tests/reference/terminal_ratio.txt: the zero of ε − 𝓕/(2𝓣) with 𝓕,
 // 𝓣 from 100-digit quadrature of the area integrals.
 std::string reference_terminal_ratio() {
-  std::ifstream in(SPINSLIDE_TERMINAL_RATIO_REFERENCE);
-  std::string line;
-  while (std::getline(in, line))
-    if (!line.empty() && line[0] != '#') return line;
-  throw std::runtime_error("no value in " SPINSLIDE_TERMINAL_RATIO_REFERENCE);
+  const auto rows = spinslide_reference::read_csv_rows(SPINSLIDE_TERMINAL_RATIO_REFERENCE);
+  if (rows.empty() || rows[0].empty())
+    throw std::runtime_error("no value in " SPINSLIDE_TERMINAL_RATIO_REFERENCE);
+  return rows[0][0];
 }
 
 TEST(TerminalRatio, PaperValueToOneUlpInDoubleAnd40DigitsInMultiprecision) {

@@ -37,12 +37,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "csv.hpp"
 
 namespace {
 
@@ -221,21 +223,16 @@ std::vector<values> compute(const std::vector<point>& pts) {
 }
 
 int compare(const char* file) {
-  std::ifstream in(file);
-  if (!in) {
-    std::fprintf(stderr, "cannot open %s\n", file);
+  std::vector<std::vector<std::string>> table;
+  try {
+    table = spinslide_reference::read_csv_rows(file, "eps_hex");
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "%s\n", e.what());
     return 2;
   }
-  std::string line;
   std::vector<std::pair<point, values>> rows;
-  std::size_t n = 0;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line.rfind("eps_hex", 0) == 0) continue;
-    if (n++ % 25 != 0) continue;
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) f.push_back(cell);
+  for (std::size_t n = 0; n < table.size(); n += 25) {
+    const std::vector<std::string>& f = table[n];
     point pt{std::strtod(f.at(0).c_str(), nullptr), f.at(2) == "1"};
     rows.push_back({pt, {big(f.at(3)), big(f.at(4)), big(f.at(5)), big(f.at(6))}});
   }

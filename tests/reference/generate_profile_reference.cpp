@@ -59,13 +59,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <functional>
 #include <mutex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "csv.hpp"
 
 namespace {
 
@@ -367,14 +369,6 @@ std::vector<values> run(const std::vector<profile>& ps, const std::vector<job>& 
   return out;
 }
 
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> f;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) f.push_back(cell);
-  return f;
-}
-
 std::size_t profile_index(const std::vector<profile>& ps, const std::string& name) {
   for (std::size_t i = 0; i < ps.size(); ++i)
     if (ps[i].name == name) return i;
@@ -385,24 +379,22 @@ std::size_t profile_index(const std::vector<profile>& ps, const std::string& nam
 // --compare FILE
 
 int compare(const char* file, const big& tol) {
-  std::ifstream in(file);
-  if (!in) {
-    std::fprintf(stderr, "cannot open %s\n", file);
+  std::vector<std::vector<std::string>> table;
+  try {
+    table = spinslide_reference::read_csv_rows(file, "profile");
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "%s\n", e.what());
     return 2;
   }
   const std::vector<profile> ps = make_profiles();
   std::vector<job> jobs;
   std::vector<values> expected;
   std::vector<std::string> lines;
-  std::string line;
-  std::size_t n = 0;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line.rfind("profile,", 0) == 0) continue;
-    if (n++ % 10 != 0) continue;
-    const std::vector<std::string> f = split_csv(line);
+  for (std::size_t n = 0; n < table.size(); n += 10) {
+    const std::vector<std::string>& f = table[n];
     const std::size_t pi_ = f.size() >= 5 ? profile_index(ps, f[0]) : ps.size();
     if (pi_ == ps.size()) {
-      std::fprintf(stderr, "bad row: %s\n", line.c_str());
+      std::fprintf(stderr, "bad row %zu of %s\n", n + 1, file);
       return 2;
     }
     jobs.push_back({pi_, std::strtod(f[1].c_str(), nullptr), tol});
@@ -432,15 +424,14 @@ struct disk_row {
   big force, torque;
 };
 
+// The uniform disk's table (empty if it cannot be read: main reports that).
 std::vector<disk_row> read_disk(const char* file) {
   std::vector<disk_row> rows;
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line.rfind("eps_hex", 0) == 0) continue;
-    const std::vector<std::string> f = split_csv(line);
-    if (f.size() < 5) continue;
-    rows.push_back({std::strtod(f[0].c_str(), nullptr), big(f[3]), big(f[4])});
+  try {
+    for (const auto& f : spinslide_reference::read_csv_rows(file, "eps_hex"))
+      if (f.size() >= 5) rows.push_back({std::strtod(f[0].c_str(), nullptr), big(f[3]), big(f[4])});
+  } catch (const std::runtime_error&) {
+    rows.clear();
   }
   return rows;
 }
