@@ -11,6 +11,7 @@
 #define SPINSLIDE_TESTS_REFERENCE_CSV_HPP
 
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -45,6 +46,19 @@ inline std::vector<std::vector<std::string>> read_csv_rows(const std::string& pa
     rows.push_back(std::move(cells));
   }
   return rows;
+}
+
+// read_csv_rows for a command-line tool: false, with the reason on stderr,
+// where read_csv_rows would throw.
+inline bool read_csv_rows(const std::string& path, const std::string& first_column,
+                          std::vector<std::vector<std::string>>& rows) {
+  try {
+    rows = read_csv_rows(path, first_column);
+    return true;
+  } catch (const std::runtime_error& e) {
+    std::cerr << e.what() << '\n';
+    return false;
+  }
 }
 
 }  // namespace spinslide_reference

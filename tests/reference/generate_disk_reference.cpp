@@ -39,7 +39,6 @@
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
-#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -224,12 +223,7 @@ std::vector<values> compute(const std::vector<point>& pts) {
 
 int compare(const char* file) {
   std::vector<std::vector<std::string>> table;
-  try {
-    table = spinslide_reference::read_csv_rows(file, "eps_hex");
-  } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 2;
-  }
+  if (!spinslide_reference::read_csv_rows(file, "eps_hex", table)) return 2;
   std::vector<std::pair<point, values>> rows;
   for (std::size_t n = 0; n < table.size(); n += 25) {
     const std::vector<std::string>& f = table[n];

@@ -62,7 +62,6 @@
 #include <functional>
 #include <mutex>
 #include <sstream>
-#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -380,12 +379,7 @@ std::size_t profile_index(const std::vector<profile>& ps, const std::string& nam
 
 int compare(const char* file, const big& tol) {
   std::vector<std::vector<std::string>> table;
-  try {
-    table = spinslide_reference::read_csv_rows(file, "profile");
-  } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 2;
-  }
+  if (!spinslide_reference::read_csv_rows(file, "profile", table)) return 2;
   const std::vector<profile> ps = make_profiles();
   std::vector<job> jobs;
   std::vector<values> expected;
@@ -426,13 +420,11 @@ struct disk_row {
 
 // The uniform disk's table (empty if it cannot be read: main reports that).
 std::vector<disk_row> read_disk(const char* file) {
+  std::vector<std::vector<std::string>> table;
   std::vector<disk_row> rows;
-  try {
-    for (const auto& f : spinslide_reference::read_csv_rows(file, "eps_hex"))
+  if (spinslide_reference::read_csv_rows(file, "eps_hex", table))
+    for (const auto& f : table)
       if (f.size() >= 5) rows.push_back({std::strtod(f[0].c_str(), nullptr), big(f[3]), big(f[4])});
-  } catch (const std::runtime_error&) {
-    rows.clear();
-  }
   return rows;
 }
 
