@@ -141,7 +141,7 @@ TEST(Checks, FunctionsNameThemselvesAndTheArgument) {
   expect_domain_error([] { hertz<>().force_torque(-1.0); },
                       {"spinslide::hertz<double>::force_torque(double)", "eps = -1"});
   expect_domain_error([] { uniform_disk<float>().torque(-1.0f); },
-                      {"spinslide::uniform_disk<float>::force_torque(float)", "eps = -1"});
+                      {"spinslide::uniform_disk<float>::torque(float)", "eps = -1"});
   expect_domain_error([] { tabulated_profile<>(ring<>()).force(nan); },
                       {"spinslide::tabulated_profile<double>", "eps = nan"});
   expect_domain_error([] { ratio_from_force(hertz<>(), 1.0); },
@@ -153,6 +153,14 @@ TEST(Checks, FunctionsNameThemselvesAndTheArgument) {
                       {"terminal_motion<double>", "initial_ratio = -1"});
   expect_domain_error([] { simulate_throw(ring<>(), 0.5, -1.0, 1.0); },
                       {"simulate_throw<double>", "v0 = -1"});
+  expect_domain_error([] { stop_time(ring<>(), 0.0, 1.0, 1.0); },
+                      {"spinslide::stop_time<double>(profile,", "inertia_ratio = 0"});
+  expect_domain_error([] { stop_time(-1.0f, 1.0f); },
+                      {"spinslide::stop_time<float>(profile,", "v0 = -1"});
+  expect_domain_error([] { stop_time(1.0, -1.0); },
+                      {"spinslide::stop_time<double>(double, double)", "omega0 = -1"});
+  expect_domain_error([] { hertz<>().force(-2.0); },
+                      {"spinslide::hertz<double>::force(double)", "eps = -2"});
   expect_domain_error([] { simulate_throw_si(ring<>(), 0.06, 0.2, 9.81, 0.5, 1.0, nan); },
                       {"simulate_throw_si<double>", "omega0 = nan"});
   expect_domain_error([] { simulate_throw_si(ring<>(), 0.06, -0.25, 9.81, 0.5, 1.0, 1.0); },

@@ -363,6 +363,26 @@ stop_result<typename Profile::value_type> integrate_stop(
 
 }  // namespace detail
 
+namespace detail {
+
+// A throw's checks (named after the entry point `function`), then integrate_stop.
+template <class Profile, class Real, class Observer>
+stop_result<Real> checked_throw_to_stop(const char* function, const Profile& profile,
+                                        Real inertia_ratio, Real v0, Real omega0,
+                                        Observer observer) {
+  static_assert(requires_profile<Profile>());
+  const auto in = check_throw(function, inertia_ratio, v0, omega0, typename Profile::policy_type());
+  if (!in.valid()) {
+    const Real nan = std::numeric_limits<Real>::quiet_NaN();
+    return {nan, nan, nan, {terminal_regime::sliding_and_spinning, nan}};
+  }
+  std::vector<Real> none;
+  std::vector<motion_sample<Real>> unused;
+  return integrate_stop(profile, in.gamma, in.v0, in.omega0, observer, none, unused);
+}
+
+}  // namespace detail
+
 /// The throw of a body with `profile` and inertia ratio γ from dimensionless
 /// speed v0* and spin ω0* (both ≥ 0): the exact stop time, distance, angle and
 /// terminal regime.  `observer(motion_sample)` is called at every adaptive
@@ -372,16 +392,8 @@ stop_result<typename Profile::value_type> integrate_stop(
 template <class Profile, class Real, class Observer>
 stop_result<Real> simulate_throw(const Profile& profile, Real inertia_ratio, Real v0, Real omega0,
                                  Observer observer) {
-  static_assert(detail::requires_profile<Profile>());
-  const auto in = detail::check_throw("spinslide::simulate_throw<%1%>(profile, %1%, %1%, %1%)",
-                                      inertia_ratio, v0, omega0, typename Profile::policy_type());
-  if (!in.valid()) {
-    const Real nan = std::numeric_limits<Real>::quiet_NaN();
-    return {nan, nan, nan, {terminal_regime::sliding_and_spinning, nan}};
-  }
-  std::vector<Real> none;
-  std::vector<motion_sample<Real>> unused;
-  return detail::integrate_stop(profile, in.gamma, in.v0, in.omega0, observer, none, unused);
+  return detail::checked_throw_to_stop("spinslide::simulate_throw<%1%>(profile, %1%, %1%, %1%)",
+                                       profile, inertia_ratio, v0, omega0, observer);
 }
 
 /// The trajectory of a throw sampled at the given times (dimensionless,
@@ -450,7 +462,9 @@ stop_result<Real> simulate_throw_si(const Profile& profile, Real radius, Real fr
 /// Dimensionless stop time t* of a throw (v0*, ω0*) for any profile and γ.
 template <class Profile, class Real>
 Real stop_time(const Profile& profile, Real inertia_ratio, Real v0, Real omega0) {
-  return simulate_throw(profile, inertia_ratio, v0, omega0).time;
+  return detail::checked_throw_to_stop("spinslide::stop_time<%1%>(profile, %1%, %1%, %1%)", profile,
+                                       inertia_ratio, v0, omega0, [](const motion_sample<Real>&) {})
+      .time;
 }
 
 }  // namespace spinslide

@@ -38,8 +38,17 @@ class profile_base {
   /// ε ∈ [0, ∞]: ε = 0 is pure spinning (𝓕 = 0, 𝓣 = ⟨r⟩) and ε = +∞ pure
   /// sliding (𝓕 = 1, 𝓣 = 0).  NaN or ε < 0 is a domain error through
   /// policy_type, naming the profile.
-  force_torque_result<Real> force_torque(Real eps) const {
-    if (!detail::satisfies(eps, detail::argument_rule::non_negative)) return invalid(eps);
+  force_torque_result<Real> force_torque(Real eps) const { return at(eps, "force_torque"); }
+  /// 𝓕(ε); as force_torque().
+  Real force(Real eps) const { return at(eps, "force").force; }
+  /// 𝓣(ε); as force_torque().
+  Real torque(Real eps) const { return at(eps, "torque").torque; }
+
+ private:
+  const Derived& self() const { return static_cast<const Derived&>(*this); }
+  // `member` is the entry point that was called, for the message.
+  force_torque_result<Real> at(Real eps, const char* member) const {
+    if (!detail::satisfies(eps, detail::argument_rule::non_negative)) return invalid(eps, member);
     if (eps == 0) return {Real(0), self().mean_radius()};      // pure spinning
     if ((boost::math::isinf)(eps)) return {Real(1), Real(0)};  // pure sliding
     force_torque_result<Real> r = self().general(eps);
@@ -50,16 +59,9 @@ class profile_base {
     if (r.force > 1) r.force = 1;
     return r;
   }
-  /// 𝓕(ε); as force_torque().
-  Real force(Real eps) const { return force_torque(eps).force; }
-  /// 𝓣(ε); as force_torque().
-  Real torque(Real eps) const { return force_torque(eps).torque; }
-
- private:
-  const Derived& self() const { return static_cast<const Derived&>(*this); }
-  static force_torque_result<Real> invalid(Real eps) {
+  static force_torque_result<Real> invalid(Real eps, const char* member) {
     // The entry point's name is built only here, on the error path.
-    const std::string function = std::string(Derived::name) + "::force_torque(%1%)";
+    const std::string function = std::string(Derived::name) + "::" + member + "(%1%)";
     const Real nan = detail::raise_argument_error(
         function.c_str(), "eps", detail::requirement(detail::argument_rule::non_negative), eps,
         Policy());
