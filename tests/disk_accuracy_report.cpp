@@ -11,6 +11,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include <cstdio>
+#include <exception>
 
 #include "reference_table.hpp"
 
@@ -81,9 +82,7 @@ void report_literal(const std::vector<spinslide_test::reference_row>& rows) {
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const std::string path = argc > 1 ? argv[1] : SPINSLIDE_DISK_REFERENCE;
   const auto rows = spinslide_test::load_disk_reference(path);
   std::printf("Largest error in units of epsilon of each type (boost::math::epsilon_difference)\n");
@@ -99,4 +98,17 @@ int main(int argc, char** argv) {
   std::printf("\nliteral torque at eps = 1e6: %.17g (exact: 2.5000000000002083e-07)\n",
               literal(spinslide_test::quantity::torque, 1e6));
   return 0;
+}
+
+}  // namespace
+
+// An exception (the table cannot be read, a row does not parse) is reported
+// with the program's name, and the exit status is 1.
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "disk_accuracy_report: %s\n", e.what());
+    return 1;
+  }
 }
