@@ -37,6 +37,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -79,7 +80,7 @@ big integrate_y(tanh_sinh<big>& q, F f, const big& eps) {
 
 values disk_integrals(tanh_sinh<big>& q, const big& eps) {
   using std::sqrt;
-  const big pi = boost::math::constants::pi<big>();
+  const big& pi = boost::math::constants::pi<big>();
   auto parts = [eps](const big& y, big& X, big& S, big& c, big& L) {
     X = sqrt((1 - y) * (1 + y));
     c = y - eps;
@@ -114,7 +115,7 @@ values disk_integrals(tanh_sinh<big>& q, const big& eps) {
 void check_2d(double eps_d) {
   using mid = boost::multiprecision::cpp_bin_float_50;
   const mid eps = eps_d;
-  const mid pi = boost::math::constants::pi<mid>();
+  const mid& pi = boost::math::constants::pi<mid>();
   tanh_sinh<mid> outer, inner;
   const mid tol("1e-30");
   auto area = [&](auto integrand) {
@@ -264,9 +265,7 @@ int terminal_ratio() {
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   bool do_check = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -295,4 +294,18 @@ int main(int argc, char** argv) {
   std::printf("eps_hex,eps,float_exact,force,torque,force_derivative,torque_derivative\n");
   for (std::size_t i = 0; i < pts.size(); ++i) std::printf("%s\n", row(pts[i], vals[i]).c_str());
   return 0;
+}
+
+}  // namespace
+
+// An exception (a row of the --compare FILE that does not parse, a failed
+// quadrature or root finding) is reported with the program's name, and the
+// exit status is 2, as for a file that cannot be read.
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "generate_disk_reference: %s\n", e.what());
+    return 2;
+  }
 }
