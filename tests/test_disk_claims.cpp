@@ -199,14 +199,14 @@ TEST(Identities, LargeEpsilonAsymptotes) {
 // The paper's closed forms, literally, with Boost's K(k), E(k) (modulus k),
 // evaluated in 50 digits so that their cancellation at large ε does not hide
 // the comparison.
-mp printed_force(mp e) {
+mp printed_force(const mp& e) {
   using boost::math::ellint_1;
   using boost::math::ellint_2;
   if (e <= 1)
     return 4 * ((e * e + 1) * ellint_2(e) + (e * e - 1) * ellint_1(e)) / (3 * e * pi<mp>());
   return 4 * ((e * e + 1) * ellint_2(1 / e) - (e * e - 1) * ellint_1(1 / e)) / (3 * pi<mp>());
 }
-mp printed_torque(mp e) {
+mp printed_torque(const mp& e) {
   using boost::math::ellint_1;
   using boost::math::ellint_2;
   if (e <= 1)
@@ -304,15 +304,10 @@ template <class Real>
   return ::testing::AssertionFailure() << got << " where the reference is " << want;
 }
 
-// Valid input never throws and never returns a non-finite value, including the
-// extremes of each type and the neighbours of 1.  Where ε is so small or so
-// large that the next term of the series is below an ulp, the four functions
-// are the leading terms (S2 and docs/theory.md §8): for ε ≤ √ε_mach/4,
-// 𝓕 = ε(1 − ε²/8), 𝓣 = 2/3 − ε²/2, 𝓕′ = 1 − 3ε²/8; for ε ≥ 4/√ε_mach,
-// 𝓕 = 1 − 1/(8ε²), 𝓣 = (1 + 1/(12ε²))/(4ε), 𝓕′ = 1/(4ε³); and 𝓣′ = −ε𝓕′
-// (I2), all evaluated in cpp_bin_float_50.
+// The ε of the sweep: the ends of the type, the neighbours of 1, and every
+// eighth binade from the smallest normal number up.
 template <class Real>
-void sweep_extremes() {
+std::vector<Real> extreme_ratios() {
   using lim = std::numeric_limits<Real>;
   std::vector<Real> xs = {lim::denorm_min(),
                           lim::min(),
@@ -325,39 +320,82 @@ void sweep_extremes() {
                           1 / lim::epsilon(),
                           lim::max()};
   for (Real e = lim::min(); e < lim::max() / 8; e *= 8) xs.push_back(e);
-  for (const Real& e : xs) {
+  return xs;
+}
+
+// 𝓕, 𝓣, 𝓕′, 𝓣′ and force_torque's 𝓣 at e, in that order, or the exception one
+// of them threw.
+template <class Real>
+::testing::AssertionResult evaluate_at(const Real& e, std::vector<Real>& v) {
+  try {
+    v = {spinslide::force(e), spinslide::torque(e), spinslide::force_derivative(e),
+         spinslide::torque_derivative(e), spinslide::force_torque(e).torque};
+  } catch (const std::exception& ex) {
+    return ::testing::AssertionFailure() << "exception at eps = " << e << ": " << ex.what();
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// Every value finite, 0 ≤ 𝓕 ≤ 1 and 0 ≤ 𝓣 ≤ 2/3.
+template <class Real>
+void assert_finite_and_in_range(const Real& e, const std::vector<Real>& v) {
+  for (const Real& x : v) ASSERT_TRUE((boost::math::isfinite)(x)) << e;
+  ASSERT_GE(v[0], 0);
+  ASSERT_LE(v[0], 1);
+  ASSERT_GE(v[1], 0);
+  ASSERT_LE(v[1], Real(2) / 3);
+}
+
+// The leading terms 𝓕, 𝓣, 𝓕′ at e (see sweep_extremes); false where e is
+// neither small nor large enough for them.
+template <class Real>
+bool leading_terms(const Real& e, mp& F, mp& T, mp& dF) {
+  using lim = std::numeric_limits<Real>;
+  using std::sqrt;
+  const Real root = sqrt(lim::epsilon());
+  const mp E(e);
+  if (e <= root / 4) {
+    F = E * (1 - E * E / 8);
+    T = mp(2) / 3 - E * E / 2;
+    dF = 1 - 3 * E * E / 8;
+    return true;
+  }
+  if (e >= 4 / root) {
+    F = 1 - 1 / (8 * E * E);
+    T = (1 + 1 / (12 * E * E)) / (4 * E);
+    dF = 1 / (4 * E * E * E);
+    return true;
+  }
+  return false;
+}
+
+template <class Real>
+void expect_leading_terms(const Real& e, const std::vector<Real>& v) {
+  mp F, T, dF;
+  if (!leading_terms(e, F, T, dF)) return;
+  const mp E(e);
+  EXPECT_TRUE(close_to(v[0], F)) << "force at " << e;
+  EXPECT_TRUE(close_to(v[1], T)) << "torque at " << e;
+  EXPECT_TRUE(close_to(v[2], dF)) << "force_derivative at " << e;
+  EXPECT_TRUE(close_to(v[3], mp(-E * dF))) << "torque_derivative at " << e;
+  EXPECT_TRUE(close_to(v[4], T)) << "force_torque at " << e;
+}
+
+// Valid input never throws and never returns a non-finite value, including the
+// extremes of each type and the neighbours of 1.  Where ε is so small or so
+// large that the next term of the series is below an ulp, the four functions
+// are the leading terms (S2 and docs/theory.md §8): for ε ≤ √ε_mach/4,
+// 𝓕 = ε(1 − ε²/8), 𝓣 = 2/3 − ε²/2, 𝓕′ = 1 − 3ε²/8; for ε ≥ 4/√ε_mach,
+// 𝓕 = 1 − 1/(8ε²), 𝓣 = (1 + 1/(12ε²))/(4ε), 𝓕′ = 1/(4ε³); and 𝓣′ = −ε𝓕′
+// (I2), all evaluated in cpp_bin_float_50.  The first failed assertion on
+// finiteness or range (or an exception) ends the sweep.
+template <class Real>
+void sweep_extremes() {
+  for (const Real& e : extreme_ratios<Real>()) {
     std::vector<Real> v;
-    try {
-      v = {spinslide::force(e), spinslide::torque(e), spinslide::force_derivative(e),
-           spinslide::torque_derivative(e), spinslide::force_torque(e).torque};
-    } catch (const std::exception& ex) {
-      FAIL() << "exception at eps = " << e << ": " << ex.what();
-    }
-    for (const Real& x : v) ASSERT_TRUE((boost::math::isfinite)(x)) << e;
-    ASSERT_GE(v[0], 0);
-    ASSERT_LE(v[0], 1);
-    ASSERT_GE(v[1], 0);
-    ASSERT_LE(v[1], Real(2) / 3);
-    using std::sqrt;
-    const Real root = sqrt(lim::epsilon());
-    const mp E(e);
-    mp F, T, dF;
-    if (e <= root / 4) {
-      F = E * (1 - E * E / 8);
-      T = mp(2) / 3 - E * E / 2;
-      dF = 1 - 3 * E * E / 8;
-    } else if (e >= 4 / root) {
-      F = 1 - 1 / (8 * E * E);
-      T = (1 + 1 / (12 * E * E)) / (4 * E);
-      dF = 1 / (4 * E * E * E);
-    } else {
-      continue;
-    }
-    EXPECT_TRUE(close_to(v[0], F)) << "force at " << e;
-    EXPECT_TRUE(close_to(v[1], T)) << "torque at " << e;
-    EXPECT_TRUE(close_to(v[2], dF)) << "force_derivative at " << e;
-    EXPECT_TRUE(close_to(v[3], mp(-E * dF))) << "torque_derivative at " << e;
-    EXPECT_TRUE(close_to(v[4], T)) << "force_torque at " << e;
+    ASSERT_TRUE(evaluate_at(e, v));
+    ASSERT_NO_FATAL_FAILURE(assert_finite_and_in_range(e, v));
+    expect_leading_terms(e, v);
   }
 }
 
