@@ -78,11 +78,11 @@ double worst_against_reference(const P& p, const std::string& name, double* wher
   return worst;
 }
 
-#define EXPECT_PROFILE_MATCHES_REFERENCE(profile, name, tol)                           \
-  do {                                                                                 \
-    double at = 0;                                                                     \
-    const double w = worst_against_reference(profile, name, &at);                      \
-    EXPECT_LE(w, tol) << name << ": worst relative error " << w << " at eps = " << at; \
+#define EXPECT_PROFILE_MATCHES_REFERENCE(profile, name, tol)                             \
+  do {                                                                                   \
+    double at = 0;                                                                       \
+    const double w = worst_against_reference(profile, name, &at);                        \
+    EXPECT_LE(w, tol) << (name) << ": worst relative error " << w << " at eps = " << at; \
   } while (0)
 
 // ---------------------------------------------------------------- accuracy
@@ -163,18 +163,29 @@ TEST(ProfileMoments, ClosedFormsAndQuadratureAgree) {
   expect_moments(two_tier(), two_tier_moments, "two-tier");
 }
 
-// 𝓕′(0) = ⟨1/r⟩/2, 𝓣(0) = ⟨r⟩, ε𝓣(ε) → ⟨r²⟩/2, 𝓕(∞) = 1 (docs/theory.md §6).
+// 𝓕′(0) = ⟨1/r⟩/2, 𝓣(0) = ⟨r⟩, ε𝓣(ε) → ⟨r²⟩/2, 𝓕(∞) = 1 (docs/theory.md §6):
+// approached at ε = 1e-7 and 1e7, and exact at 0 and ∞.
 template <class P>
-void expect_limits(const P& p, const char* name) {
+void expect_limits_approached(const P& p, const char* name) {
   const double small = 1e-7, large = 1e7;
   EXPECT_LE(relative_difference(p.force(small) / small, p.mean_inverse_radius() / 2), 1e-9) << name;
   EXPECT_LE(relative_difference(p.torque(small), p.mean_radius()), 1e-9) << name;
   EXPECT_LE(relative_difference(large * p.torque(large), p.mean_square_radius() / 2), 1e-9) << name;
   EXPECT_LE(relative_difference(p.force(large), 1.0), 1e-12) << name;
+}
+
+template <class P>
+void expect_limits_exact(const P& p, const char* name) {
   EXPECT_EQ(p.force(0.0), 0.0) << name;
   EXPECT_EQ(p.torque(0.0), p.mean_radius()) << name;
   EXPECT_EQ(p.force(INFINITY), 1.0) << name;
   EXPECT_EQ(p.torque(INFINITY), 0.0) << name;
+}
+
+template <class P>
+void expect_limits(const P& p, const char* name) {
+  expect_limits_approached(p, name);
+  expect_limits_exact(p, name);
 }
 
 TEST(ProfileLimits, EveryProfile) {
@@ -375,17 +386,30 @@ TEST(Annulus, RegressionForceRoundedAboveOneAtLargeRatios) {
 
 // ---------------------------------------------------------------- coupling curve
 
+// 𝓕(ratio_from_force(F)) = F to `ulps` over the whole range of 𝓕.
 template <class P>
-void expect_round_trips(const P& p, const char* name, double ulps) {
+void expect_force_round_trips(const P& p, const char* name, double ulps) {
   for (double F : {1e-300, 1e-9, 0.01, 0.3, 0.6, 0.9, 0.999, 0.999999, 1 - 1e-12}) {
     const double e = ratio_from_force(p, F);
     EXPECT_LE(boost::math::epsilon_difference(p.force(e), F), ulps) << name << " F = " << F;
   }
+}
+
+// 𝓣(ratio_from_torque(T)) = T to `ulps` over the whole range of 𝓣, (0, ⟨r⟩).
+template <class P>
+void expect_torque_round_trips(const P& p, const char* name, double ulps) {
   const double top = p.mean_radius();
   for (double T : {1e-300, 1e-9, 0.01 * top, 0.3 * top, 0.9 * top, 0.999999 * top}) {
     const double e = ratio_from_torque(p, T);
     EXPECT_LE(boost::math::epsilon_difference(p.torque(e), T), ulps) << name << " T = " << T;
   }
+}
+
+template <class P>
+void expect_round_trips(const P& p, const char* name, double ulps) {
+  expect_force_round_trips(p, name, ulps);
+  expect_torque_round_trips(p, name, ulps);
+  const double top = p.mean_radius();
   EXPECT_EQ(ratio_from_force(p, 0.0), 0.0);
   EXPECT_EQ(ratio_from_torque(p, top), 0.0);
   EXPECT_EQ(torque_at_force(p, 0.0), top);
@@ -513,26 +537,46 @@ TEST(PaperClaims, CdHoleChangesForceAndTorqueByUnderTwoPercent) {
 
 // ---------------------------------------------------------------- tabulated
 
-template <class P>
-void expect_tabulated(const P& p, const char* name) {
-  const tabulated_profile<> tab(p);
+// The largest relative difference of 𝓕 or 𝓣 between two profiles, and the ε
+// where it is.
+struct largest_difference {
   double worst = 0, at = 0;
-  auto check = [&](double e) {
-    const auto a = tab.force_torque(e), b = p.force_torque(e);
+  template <class P, class Q>
+  void add(const P& p, const Q& q, double e) {
+    const auto a = p.force_torque(e), b = q.force_torque(e);
     const double d =
         std::max(relative_difference(a.force, b.force), relative_difference(a.torque, b.torque));
     if (d > worst) {
       worst = d;
       at = e;
     }
-  };
-  for (double e = 1e-12; e < 1e12; e *= 1.031) check(e);
-  for (double e = 0.999; e < 1.001; e += 3.7e-6) check(e);  // where the kernel is singular
-  for (double e : {1e-300, 1e-30, 1e30, 1e300}) check(e);
-  EXPECT_LE(worst, 1e-10) << name << ": worst " << worst << " at eps = " << at;
+  }
+};
+
+// The tabulated profile against its source: ε from 1e-12 to 1e12, densely
+// around 1 (where the kernel is singular) and at the extremes.
+template <class P>
+largest_difference tabulated_difference(const tabulated_profile<>& tab, const P& p) {
+  largest_difference d;
+  for (double e = 1e-12; e < 1e12; e *= 1.031) d.add(tab, p, e);
+  for (double e = 0.999; e < 1.001; e += 3.7e-6) d.add(tab, p, e);  // where the kernel is singular
+  for (double e : {1e-300, 1e-30, 1e30, 1e300}) d.add(tab, p, e);
+  return d;
+}
+
+// A negative ratio is a domain error for the tabulated profile too.
+void expect_negative_ratio_is_a_domain_error(const tabulated_profile<>& tab) {
+  EXPECT_THROW(tab.force(-1.0), std::domain_error);
+}
+
+template <class P>
+void expect_tabulated(const P& p, const char* name) {
+  const tabulated_profile<> tab(p);
+  const largest_difference d = tabulated_difference(tab, p);
+  EXPECT_LE(d.worst, 1e-10) << name << ": worst " << d.worst << " at eps = " << d.at;
   EXPECT_EQ(tab.force(0.0), 0.0);
   EXPECT_EQ(tab.force(INFINITY), 1.0);
-  EXPECT_THROW(tab.force(-1.0), std::domain_error);
+  expect_negative_ratio_is_a_domain_error(tab);
 }
 
 TEST(Tabulated, Within1e10EverywhereForEveryProfile) {
