@@ -76,25 +76,44 @@ TEST(RatioFlow, GeneralGammaAsymptotes) {
   }
 }
 
+// Just below the window's lower edge γ the motion ends in pure sliding, just
+// above it in both with a large ε₀.
 template <class P>
-void expect_window_edges(const P& p, const char* name) {
-  const auto w = terminal_window(p);
-  ASSERT_LT(w.lower, w.upper) << name;
+void expect_lower_edge(const P& p, double lower, const char* name) {
   const double d = 1e-6;
-  EXPECT_EQ(terminal_motion(p, w.lower * (1 - d)).regime, terminal_regime::pure_sliding) << name;
-  const auto in_low = terminal_motion(p, w.lower * (1 + d));
+  EXPECT_EQ(terminal_motion(p, lower * (1 - d)).regime, terminal_regime::pure_sliding) << name;
+  const auto in_low = terminal_motion(p, lower * (1 + d));
   EXPECT_EQ(in_low.regime, terminal_regime::sliding_and_spinning) << name;
   EXPECT_GT(in_low.ratio, 10) << name;  // just inside: ε₀ is large
-  const auto in_high = terminal_motion(p, w.upper * (1 - d));
+}
+
+// Just below the window's upper edge γ the motion ends in both with a small
+// ε₀, just above it in pure spinning.
+template <class P>
+void expect_upper_edge(const P& p, double upper, const char* name) {
+  const double d = 1e-6;
+  const auto in_high = terminal_motion(p, upper * (1 - d));
   EXPECT_EQ(in_high.regime, terminal_regime::sliding_and_spinning) << name;
   EXPECT_LT(in_high.ratio, 0.1) << name;  // just inside: ε₀ is small
-  EXPECT_EQ(terminal_motion(p, w.upper * (1 + d)).regime, terminal_regime::pure_spinning) << name;
-  // In the window ε₀ is a zero of f and attracts.
-  const double g = (w.lower + w.upper) / 2;
+  EXPECT_EQ(terminal_motion(p, upper * (1 + d)).regime, terminal_regime::pure_spinning) << name;
+}
+
+// In the window ε₀ is a zero of f and attracts.
+template <class P>
+void expect_attracting_zero(const P& p, double g, const char* name) {
   const auto t = terminal_motion(p, g);
   EXPECT_LE(std::fabs(ratio_flow(p, t.ratio, g)), 1e-13 * t.ratio) << name;
   EXPECT_GT(ratio_flow(p, t.ratio * 0.99, g), 0) << name;
   EXPECT_LT(ratio_flow(p, t.ratio * 1.01, g), 0) << name;
+}
+
+template <class P>
+void expect_window_edges(const P& p, const char* name) {
+  const auto w = terminal_window(p);
+  ASSERT_LT(w.lower, w.upper) << name;
+  expect_lower_edge(p, w.lower, name);
+  expect_upper_edge(p, w.upper, name);
+  expect_attracting_zero(p, (w.lower + w.upper) / 2, name);
 }
 
 TEST(TerminalMotion, RegimesOnBothSidesOfEachWindowEdge) {
