@@ -59,11 +59,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "csv.hpp"
@@ -357,6 +359,7 @@ std::vector<values> run(const std::vector<profile>& ps, const std::vector<job>& 
     total.worst_inner = std::max(total.worst_inner, q.worst_inner);
   };
   std::vector<std::thread> workers;
+  workers.reserve(2);
   for (int t = 0; t < 2; ++t) workers.emplace_back(work);
   for (auto& w : workers) w.join();
   std::fprintf(stderr,
@@ -428,194 +431,242 @@ std::vector<disk_row> read_disk(const char* file) {
   return rows;
 }
 
-}  // namespace
+// ---------------------------------------------------------------------------
+// The command line and the table with its self-checks
 
-int main(int argc, char** argv) {
-  big tol("1e-20");
+struct options {
+  big tol{"1e-20"};
   std::string tol_text = "1e-20";
   const char* disk_file = "tests/reference/disk_reference.csv";
+};
+
+// Reads the options into `o`.  --compare FILE runs the comparison at once,
+// with the --tol given before it.  False, with the exit status in `status`,
+// when there is nothing more to do (the comparison ran, or a usage error).
+bool parse_command_line(int argc, char** argv, options& o, int& status) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--tol" && i + 1 < argc) {
-      tol_text = argv[++i];
-      tol = big(tol_text);
+      o.tol_text = argv[++i];
+      o.tol = big(o.tol_text);
     } else if (a == "--disk" && i + 1 < argc) {
-      disk_file = argv[++i];
+      o.disk_file = argv[++i];
     } else if (a == "--compare" && i + 1 < argc) {
-      return compare(argv[++i], tol);
+      status = compare(argv[++i], o.tol);
+      return false;
     } else {
       std::fprintf(stderr, "usage: %s [--tol T] [--disk FILE] [--compare FILE]\n", argv[0]);
-      return 2;
+      status = 2;
+      return false;
     }
   }
-  const auto t_start = std::chrono::steady_clock::now();
-  const std::vector<profile> ps = make_profiles();
-  const std::vector<double> grid = eps_grid();
-  const std::size_t uniform = profile_index(ps, "uniform");
+  return true;
+}
 
-  // Uniform-disk self-check points: grid ∩ disk file, plus ~10 rows of the file.
-  const std::vector<disk_row> disk = read_disk(disk_file);
-  if (disk.empty()) {
-    std::fprintf(stderr, "cannot read uniform-disk reference %s\n", disk_file);
-    return 2;
-  }
-  std::vector<std::size_t> disk_pick;  // indices into `disk`
-  for (std::size_t i = 0; i < disk.size(); ++i)
-    if (std::find(grid.begin(), grid.end(), disk[i].eps) != grid.end()) disk_pick.push_back(i);
-  const std::size_t n_overlap = disk_pick.size();
+bool on_grid(const std::vector<double>& grid, double e) {
+  return std::find(grid.begin(), grid.end(), e) != grid.end();
+}
+
+// The uniform disk's table and the rows of it the self-check recomputes:
+// those on the grid (the first n_overlap of `pick`), then ~10 spread over the
+// file.
+struct disk_check {
+  const char* file;
+  std::vector<disk_row> rows;
+  std::vector<std::size_t> pick;  // indices into `rows`
+  std::size_t n_overlap = 0;
+};
+
+disk_check pick_disk_rows(const char* file, std::vector<disk_row> rows,
+                          const std::vector<double>& grid) {
+  disk_check d{file, std::move(rows), {}, 0};
+  for (std::size_t i = 0; i < d.rows.size(); ++i)
+    if (on_grid(grid, d.rows[i].eps)) d.pick.push_back(i);
+  d.n_overlap = d.pick.size();
   for (std::size_t k = 0; k < 10; ++k) {
-    const std::size_t i = (k * (disk.size() - 1)) / 9;
-    if (std::find(disk_pick.begin(), disk_pick.end(), i) == disk_pick.end()) disk_pick.push_back(i);
+    const std::size_t i = (k * (d.rows.size() - 1)) / 9;
+    if (std::find(d.pick.begin(), d.pick.end(), i) == d.pick.end()) d.pick.push_back(i);
   }
+  return d;
+}
 
-  // Main table (uniform on the full grid, too: it is the self-check profile)
-  // plus the extra uniform points.
+// The computed table: every profile on the full grid (uniform too: it is the
+// self-check profile), jobs [0, n_table), then the extra uniform-disk points
+// of the self-check that are not on the grid (extra_job[i] for row i).
+struct computed_table {
+  const std::vector<profile>& ps;
+  const std::vector<double>& grid;
   std::vector<job> jobs;
-  for (std::size_t p = 0; p < ps.size(); ++p)
-    for (double e : grid) jobs.push_back({p, e, tol});
-  const std::size_t n_table = jobs.size();
-  std::vector<std::size_t> extra_job(disk.size(), 0);
-  for (std::size_t i : disk_pick) {
-    if (std::find(grid.begin(), grid.end(), disk[i].eps) != grid.end()) continue;
-    extra_job[i] = jobs.size();
-    jobs.push_back({uniform, disk[i].eps, tol});
-  }
+  std::size_t n_table = 0;
+  std::vector<std::size_t> extra_job;
+  std::vector<values> vals;
   run_stats stats;
-  const std::vector<values> vals = run(ps, jobs, "table", &stats);
-  auto value_of = [&](std::size_t p, double e) -> const values& {
+
+  const values& value_of(std::size_t p, double e) const {
     const auto k = static_cast<std::size_t>(std::find(grid.begin(), grid.end(), e) - grid.begin());
     return vals[p * grid.size() + k];
-  };
+  }
+};
 
-  bool ok = true;
-  std::vector<std::string> notes;  // echoed into the CSV header
-  char buf[512];
+computed_table compute_table(const std::vector<profile>& ps, const std::vector<double>& grid,
+                             std::size_t uniform, const disk_check& disk, const big& tol) {
+  computed_table c{ps, grid, {}, 0, {}, {}, {}};
+  for (std::size_t p = 0; p < ps.size(); ++p)
+    for (double e : grid) c.jobs.push_back({p, e, tol});
+  c.n_table = c.jobs.size();
+  c.extra_job.assign(disk.rows.size(), 0);
+  for (std::size_t i : disk.pick) {
+    if (on_grid(grid, disk.rows[i].eps)) continue;
+    c.extra_job[i] = c.jobs.size();
+    c.jobs.push_back({uniform, disk.rows[i].eps, tol});
+  }
+  c.vals = run(ps, c.jobs, "table", &c.stats);
+  return c;
+}
 
-  // 1. Uniform disk vs disk_reference.csv.
+// Self-check 1: the uniform disk against disk_reference.csv (limit 1e-22).
+bool check_uniform_disk(const computed_table& c, std::size_t uniform, const disk_check& disk,
+                        std::vector<std::string>& notes) {
   double worst_disk = 0;
   double worst_disk_eps = 0;
-  for (std::size_t i : disk_pick) {
-    const bool on_grid = std::find(grid.begin(), grid.end(), disk[i].eps) != grid.end();
-    const values& v = on_grid ? value_of(uniform, disk[i].eps) : vals[extra_job[i]];
-    const double d = std::max(rel(v.force, disk[i].force), rel(v.torque, disk[i].torque));
+  for (std::size_t i : disk.pick) {
+    const disk_row& row = disk.rows[i];
+    const values& v =
+        on_grid(c.grid, row.eps) ? c.value_of(uniform, row.eps) : c.vals[c.extra_job[i]];
+    const double d = std::max(rel(v.force, row.force), rel(v.torque, row.torque));
     if (d > worst_disk) {
       worst_disk = d;
-      worst_disk_eps = disk[i].eps;
+      worst_disk_eps = row.eps;
     }
   }
+  char buf[512];
   std::snprintf(buf, sizeof buf,
                 "self-check: uniform disk vs %s at %zu eps (%zu on the grid, %zu extra): "
                 "largest relative difference %.2e (at eps=%.17g) [limit 1e-22]",
-                disk_file, disk_pick.size(), n_overlap, disk_pick.size() - n_overlap, worst_disk,
-                worst_disk_eps);
+                disk.file, disk.pick.size(), disk.n_overlap, disk.pick.size() - disk.n_overlap,
+                worst_disk, worst_disk_eps);
   std::fprintf(stderr, "%s\n", buf);
   notes.push_back(buf);
-  if (!(worst_disk < 1e-22)) ok = false;
+  return worst_disk < 1e-22;
+}
 
-  // 2. Exact sanity facts.
+// Self-check 2: the exact limits of every profile, approached at ε = 1e-6 and
+// 1e6 (printed; each within its bound).
+bool check_limits(const computed_table& c) {
   std::fprintf(stderr,
                "\nsanity (limits; deviations are the O(ε)/O(1/ε²) approach, not errors):\n");
   std::fprintf(stderr, "%-14s %-24s %-24s %-24s %-24s\n", "profile", "F/eps/(<1/r>/2)-1 @1e-6",
                "T/<r>-1 @1e-6", "eps*T/(<r2>/2)-1 @1e6", "1-F @1e6");
-  for (std::size_t p = 0; p < ps.size(); ++p) {
-    const values& lo = value_of(p, 1e-6);
-    const values& hi = value_of(p, 1e6);
-    const big a = lo.force / big(1e-6) / (ps[p].mean_inv_r / 2) - 1;
-    const big b = lo.torque / ps[p].mean_r - 1;
-    const big c = hi.torque * big(1e6) / (ps[p].mean_r2 / 2) - 1;
+  bool ok = true;
+  for (std::size_t p = 0; p < c.ps.size(); ++p) {
+    const profile& pr = c.ps[p];
+    const values& lo = c.value_of(p, 1e-6);
+    const values& hi = c.value_of(p, 1e6);
+    const big a = lo.force / big(1e-6) / (pr.mean_inv_r / 2) - 1;
+    const big b = lo.torque / pr.mean_r - 1;
+    const big cc = hi.torque * big(1e6) / (pr.mean_r2 / 2) - 1;
     const big d = 1 - hi.force;
-    std::snprintf(buf, sizeof buf, "%-14s %-24.3e %-24.3e %-24.3e %-24.3e", ps[p].name.c_str(),
-                  static_cast<double>(a), static_cast<double>(b), static_cast<double>(c),
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%-14s %-24.3e %-24.3e %-24.3e %-24.3e", pr.name.c_str(),
+                  static_cast<double>(a), static_cast<double>(b), static_cast<double>(cc),
                   static_cast<double>(d));
     std::fprintf(stderr, "%s\n", buf);
-    if (!(abs(a) < 1e-4 && abs(b) < 1e-4 && abs(c) < 1e-9 && abs(d) < 1e-9)) {
+    if (!(abs(a) < 1e-4 && abs(b) < 1e-4 && abs(cc) < 1e-9 && abs(d) < 1e-9)) {
       std::fprintf(stderr, "  ^ sanity limit FAILED\n");
       ok = false;
     }
   }
+  return ok;
+}
 
-  // Ring reciprocity 𝓕(ε) = 𝓣(1/ε) and Boussinesq closed form for ε ≥ 1.
-  const std::size_t ring = profile_index(ps, "ring");
-  const std::size_t bous = profile_index(ps, "boussinesq");
-  {
-    quad q;
-    double worst_recip = 0;
-    for (double e : {0.5, 0.125, 1.0}) {
-      const double d1 = rel(value_of(ring, e).force, value_of(ring, 1 / e).torque);
-      const double d2 = rel(value_of(ring, 1 / e).force, value_of(ring, e).torque);
-      std::fprintf(stderr, "ring: F(%g)/T(%g)-1 = %.2e, F(%g)/T(%g)-1 = %.2e\n", e, 1 / e, d1,
-                   1 / e, e, d2);
-      worst_recip = std::max({worst_recip, d1, d2});
-    }
-    for (double e : {0.653, 1e-6}) {  // exact reciprocal in 50 digits
-      const values inv = compute(q, ps[ring], 1 / big(e), tol);
-      const double d1 = rel(value_of(ring, e).force, inv.torque);
-      const double d2 = rel(inv.force, value_of(ring, e).torque);
-      std::fprintf(stderr, "ring: F(%g)/T(1/%g)-1 = %.2e, F(1/%g)/T(%g)-1 = %.2e\n", e, e, d1, e, e,
-                   d2);
-      worst_recip = std::max({worst_recip, d1, d2});
-    }
-    std::snprintf(buf, sizeof buf,
-                  "self-check: ring F(eps) = T(1/eps): largest relative difference %.2e",
-                  worst_recip);
-    std::fprintf(stderr, "%s\n", buf);
-    notes.push_back(buf);
-    if (!(worst_recip < 1e-22)) ok = false;
-
-    double worst_b = 0;
-    for (double e : {1.0, 2.0, 8.0}) {
-      const big k = 1 / big(e);
-      const big exact = (asin(k) / k + sqrt(1 - k * k)) / 2;
-      const double d = rel(value_of(bous, e).force, exact);
-      std::fprintf(stderr, "boussinesq: F(%g) = %s, closed form %s, rel diff %.2e\n", e,
-                   fmt(value_of(bous, e).force).c_str(), fmt(exact).c_str(), d);
-      worst_b = std::max(worst_b, d);
-    }
-    std::snprintf(
-        buf, sizeof buf,
-        "self-check: boussinesq F = (asin(k)/k + sqrt(1-k^2))/2, k = 1/eps, at eps = 1, 2, 8: "
-        "largest relative difference %.2e",
-        worst_b);
-    std::fprintf(stderr, "%s\n", buf);
-    notes.push_back(buf);
-    if (!(worst_b < 1e-22)) ok = false;
+// Self-check 3: the ring's reciprocity 𝓕(ε) = 𝓣(1/ε), on the grid and, for
+// ε = 0.653 and 1e-6, against 1/ε computed exactly in 50 digits (limit 1e-22).
+bool check_ring_reciprocity(const computed_table& c, const big& tol,
+                            std::vector<std::string>& notes) {
+  const std::size_t ring = profile_index(c.ps, "ring");
+  quad q;
+  double worst_recip = 0;
+  for (double e : {0.5, 0.125, 1.0}) {
+    const double d1 = rel(c.value_of(ring, e).force, c.value_of(ring, 1 / e).torque);
+    const double d2 = rel(c.value_of(ring, 1 / e).force, c.value_of(ring, e).torque);
+    std::fprintf(stderr, "ring: F(%g)/T(%g)-1 = %.2e, F(%g)/T(%g)-1 = %.2e\n", e, 1 / e, d1, 1 / e,
+                 e, d2);
+    worst_recip = std::max({worst_recip, d1, d2});
   }
-
-  // 3. Tolerance study: tol vs tol·1e-5 for 3 profiles at 4 ε.
-  {
-    const big tight = tol / big("1e5");
-    std::vector<job> tj;
-    const std::vector<std::string> names{"hertz", "boussinesq", "two_tier"};
-    const std::vector<double> es{1e-6, 0.499, 1.0, 1e6};
-    for (const std::string& n : names)
-      for (double e : es) tj.push_back({profile_index(ps, n), e, tight});
-    const std::vector<values> tv = run(ps, tj, "tolerance study");
-    std::fprintf(stderr, "\ntolerance study: relative change of (F, T) from tol %s to tol %s:\n",
-                 tol_text.c_str(), fmt(tight, 2).c_str());
-    double worst_t = 0;
-    for (std::size_t i = 0; i < tj.size(); ++i) {
-      const values& v = value_of(tj[i].profile, tj[i].eps);
-      const double df = rel(v.force, tv[i].force), dt = rel(v.torque, tv[i].torque);
-      std::fprintf(stderr, "  %-12s eps=%-8g dF %.2e  dT %.2e\n", ps[tj[i].profile].name.c_str(),
-                   tj[i].eps, df, dt);
-      worst_t = std::max({worst_t, df, dt});
-    }
-    std::snprintf(buf, sizeof buf,
-                  "tolerance study (hertz, boussinesq, two_tier at eps = 1e-6, 0.499, 1, 1e6): "
-                  "largest relative change from tol %s to %s: %.2e",
-                  tol_text.c_str(), fmt(tight, 2).c_str(), worst_t);
-    std::fprintf(stderr, "%s\n", buf);
-    notes.push_back(buf);
-    if (!(worst_t < 1e-20)) ok = false;
+  for (double e : {0.653, 1e-6}) {  // exact reciprocal in 50 digits
+    const values inv = compute(q, c.ps[ring], 1 / big(e), tol);
+    const double d1 = rel(c.value_of(ring, e).force, inv.torque);
+    const double d2 = rel(inv.force, c.value_of(ring, e).torque);
+    std::fprintf(stderr, "ring: F(%g)/T(1/%g)-1 = %.2e, F(1/%g)/T(%g)-1 = %.2e\n", e, e, d1, e, e,
+                 d2);
+    worst_recip = std::max({worst_recip, d1, d2});
   }
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "self-check: ring F(eps) = T(1/eps): largest relative difference %.2e",
+                worst_recip);
+  std::fprintf(stderr, "%s\n", buf);
+  notes.push_back(buf);
+  return worst_recip < 1e-22;
+}
 
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-  if (!ok) {
-    std::fprintf(stderr, "\nSELF-CHECK FAILED: no table written\n");
-    return 1;
+// Self-check 4: Boussinesq's closed form for ε ≥ 1 at ε = 1, 2, 8 (limit 1e-22).
+bool check_boussinesq(const computed_table& c, std::vector<std::string>& notes) {
+  const std::size_t bous = profile_index(c.ps, "boussinesq");
+  double worst_b = 0;
+  for (double e : {1.0, 2.0, 8.0}) {
+    const big k = 1 / big(e);
+    const big exact = (asin(k) / k + sqrt(1 - k * k)) / 2;
+    const double d = rel(c.value_of(bous, e).force, exact);
+    std::fprintf(stderr, "boussinesq: F(%g) = %s, closed form %s, rel diff %.2e\n", e,
+                 fmt(c.value_of(bous, e).force).c_str(), fmt(exact).c_str(), d);
+    worst_b = std::max(worst_b, d);
   }
+  char buf[512];
+  std::snprintf(
+      buf, sizeof buf,
+      "self-check: boussinesq F = (asin(k)/k + sqrt(1-k^2))/2, k = 1/eps, at eps = 1, 2, 8: "
+      "largest relative difference %.2e",
+      worst_b);
+  std::fprintf(stderr, "%s\n", buf);
+  notes.push_back(buf);
+  return worst_b < 1e-22;
+}
 
+// Self-check 5, the tolerance study: tol vs tol·1e-5 for 3 profiles at 4 ε
+// (limit 1e-20).
+bool check_tolerance(const computed_table& c, const options& o, std::vector<std::string>& notes) {
+  const big tight = o.tol / big("1e5");
+  std::vector<job> tj;
+  const std::vector<std::string> names{"hertz", "boussinesq", "two_tier"};
+  const std::vector<double> es{1e-6, 0.499, 1.0, 1e6};
+  for (const std::string& n : names)
+    for (double e : es) tj.push_back({profile_index(c.ps, n), e, tight});
+  const std::vector<values> tv = run(c.ps, tj, "tolerance study");
+  std::fprintf(stderr, "\ntolerance study: relative change of (F, T) from tol %s to tol %s:\n",
+               o.tol_text.c_str(), fmt(tight, 2).c_str());
+  double worst_t = 0;
+  for (std::size_t i = 0; i < tj.size(); ++i) {
+    const values& v = c.value_of(tj[i].profile, tj[i].eps);
+    const double df = rel(v.force, tv[i].force), dt = rel(v.torque, tv[i].torque);
+    std::fprintf(stderr, "  %-12s eps=%-8g dF %.2e  dT %.2e\n", c.ps[tj[i].profile].name.c_str(),
+                 tj[i].eps, df, dt);
+    worst_t = std::max({worst_t, df, dt});
+  }
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "tolerance study (hertz, boussinesq, two_tier at eps = 1e-6, 0.499, 1, 1e6): "
+                "largest relative change from tol %s to %s: %.2e",
+                o.tol_text.c_str(), fmt(tight, 2).c_str(), worst_t);
+  std::fprintf(stderr, "%s\n", buf);
+  notes.push_back(buf);
+  return worst_t < 1e-20;
+}
+
+// The CSV on stdout: the header comment (with the self-checks' notes) and
+// every row of the table but the uniform disk's.
+void print_table(const computed_table& c, std::size_t uniform, const options& o,
+                 const std::vector<std::string>& notes, double seconds) {
   std::printf(
       "# spinslide reference: friction force F and torque T of a flat circular contact with an\n");
   std::printf("# axisymmetric pressure p(r), from the defining area integrals\n");
@@ -630,7 +681,7 @@ int main(int argc, char** argv) {
       "# of the raw polar integrand (no closed-form inner integral, no elliptic integrals),\n");
   std::printf(
       "# cpp_bin_float_50, tolerance %s per level (inner level scaled by min(eps,1/eps)/100 for\n",
-      tol_text.c_str());
+      o.tol_text.c_str());
   std::printf(
       "# cancellation), r split at eps and at profile breakpoints, r = sin(phi) for "
       "hertz/boussinesq.\n");
@@ -645,15 +696,70 @@ int main(int argc, char** argv) {
       "listed.)\n");
   for (const std::string& n : notes) std::printf("# %s\n", n.c_str());
   std::printf("# largest tanh_sinh error estimate / L1: outer %.1e, inner %.1e; run time %.0f s\n",
-              stats.worst_outer, stats.worst_inner, seconds);
+              c.stats.worst_outer, c.stats.worst_inner, seconds);
   std::printf(
       "# columns: profile, eps as hex float (exact), eps decimal, F, T (32 significant digits)\n");
   std::printf("profile,eps_hex,eps,force,torque\n");
-  for (std::size_t i = 0; i < n_table; ++i) {
-    if (jobs[i].profile == uniform) continue;
-    std::printf("%s,%a,%.17g,%s,%s\n", ps[jobs[i].profile].name.c_str(), jobs[i].eps, jobs[i].eps,
-                fmt(vals[i].force).c_str(), fmt(vals[i].torque).c_str());
+  for (std::size_t i = 0; i < c.n_table; ++i) {
+    const job& j = c.jobs[i];
+    if (j.profile == uniform) continue;
+    std::printf("%s,%a,%.17g,%s,%s\n", c.ps[j.profile].name.c_str(), j.eps, j.eps,
+                fmt(c.vals[i].force).c_str(), fmt(c.vals[i].torque).c_str());
   }
+}
+
+// The table: computed, self-checked, and written only if every check passes
+// (exit status 1 if one fails, 2 if the uniform-disk reference cannot be read).
+int generate_table(const options& o) {
+  const auto t_start = std::chrono::steady_clock::now();
+  const std::vector<profile> ps = make_profiles();
+  const std::vector<double> grid = eps_grid();
+  const std::size_t uniform = profile_index(ps, "uniform");
+
+  std::vector<disk_row> disk_rows = read_disk(o.disk_file);
+  if (disk_rows.empty()) {
+    std::fprintf(stderr, "cannot read uniform-disk reference %s\n", o.disk_file);
+    return 2;
+  }
+  const disk_check disk = pick_disk_rows(o.disk_file, std::move(disk_rows), grid);
+  const computed_table c = compute_table(ps, grid, uniform, disk, o.tol);
+
+  bool ok = true;
+  std::vector<std::string> notes;  // echoed into the CSV header
+  if (!check_uniform_disk(c, uniform, disk, notes)) ok = false;
+  if (!check_limits(c)) ok = false;
+  if (!check_ring_reciprocity(c, o.tol, notes)) ok = false;
+  if (!check_boussinesq(c, notes)) ok = false;
+  if (!check_tolerance(c, o, notes)) ok = false;
+
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  if (!ok) {
+    std::fprintf(stderr, "\nSELF-CHECK FAILED: no table written\n");
+    return 1;
+  }
+  print_table(c, uniform, o, notes, seconds);
   std::fprintf(stderr, "\ntotal %.0f s; all self-checks passed\n", seconds);
   return 0;
+}
+
+int generate(int argc, char** argv) {
+  options o;
+  int status = 0;
+  if (!parse_command_line(argc, argv, o, status)) return status;
+  return generate_table(o);
+}
+
+}  // namespace
+
+// An exception (a row of the --compare FILE that does not parse, a failed
+// quadrature) is reported with the program's name, and the exit status is 2,
+// as for a file that cannot be read.
+int main(int argc, char** argv) {
+  try {
+    return generate(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "generate_profile_reference: %s\n", e.what());
+    return 2;
+  }
 }
