@@ -158,7 +158,7 @@ Real ratio_flow(const Profile& profile, Real eps, Real inertia_ratio) {
                      &invalid, Policy()) ||
       !detail::check(function, "eps", eps, argument_rule::finite_non_negative, &invalid, Policy()))
     return invalid;
-  const Real gamma = inertia_ratio;
+  const Real& gamma = inertia_ratio;  // checked above
   if (eps == 0) return 0;
   const auto ft = profile.force_torque(eps);
   return eps - gamma * ft.force / ft.torque;
@@ -178,7 +178,7 @@ terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio)
   if (!detail::check(function, "inertia_ratio", inertia_ratio,
                      detail::argument_rule::finite_positive, &invalid, Policy()))
     return {terminal_regime::sliding_and_spinning, invalid};
-  const Real gamma = inertia_ratio;
+  const Real& gamma = inertia_ratio;  // checked above
   const auto ends = detail::attracting_ends(profile, gamma);
   const Real inf = std::numeric_limits<Real>::infinity();
   if (ends.first && ends.second) {
@@ -222,7 +222,7 @@ terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio,
       !detail::check(function, "initial_ratio", initial_ratio, argument_rule::non_negative,
                      &invalid, Policy()))
     return {terminal_regime::sliding_and_spinning, invalid};
-  const Real gamma = inertia_ratio;
+  const Real& gamma = inertia_ratio;  // checked above
   const Real inf = std::numeric_limits<Real>::infinity();
   if (initial_ratio == 0) return {terminal_regime::pure_spinning, Real(0)};
   if ((boost::math::isinf)(initial_ratio)) return {terminal_regime::pure_sliding, inf};
