@@ -17,7 +17,6 @@
 #include <spinslide/profile_concept.hpp>
 
 #include <algorithm>
-#include <limits>
 #include <type_traits>
 #include <utility>
 
@@ -75,9 +74,14 @@ class tabulated_throw {
 
  private:
   std::pair<Real, Real> evaluate(Real v0, Real w0, const char* function) const {
-    const auto in = detail::check_throw(function, gamma_, v0, w0, Policy());
-    if (!in.valid())
-      return {std::numeric_limits<Real>::quiet_NaN(), std::numeric_limits<Real>::quiet_NaN()};
+    // γ was checked once, by the constructor: only the speeds here.
+    using detail::argument_rule;
+    Real invalid = 0;
+    if (!detail::check(function, "v0", v0, argument_rule::finite_non_negative, &invalid,
+                       Policy()) ||
+        !detail::check(function, "omega0", w0, argument_rule::finite_non_negative, &invalid,
+                       Policy()))
+      return {invalid, invalid};
     if (w0 == 0) return {v0, v0 * v0 / 2};           // pure sliding, exact
     if (v0 == 0) return {w0 / spin_rate_, Real(0)};  // pure spinning, exact
     const Real s = v0 + w0;                          // ω0 (1 + ε)
