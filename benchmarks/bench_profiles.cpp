@@ -3,7 +3,10 @@
 //
 // Cost of one (𝓕, 𝓣) pair of each built-in profile, by its own method
 // (closed forms or ring quadrature) and tabulated, over 4096 log-uniform ε in
-// [1e-3, 1e3].  Baseline: the uniform disk's closed forms, disk.hpp.
+// [1e-3, 1e3].  Baseline: the uniform disk's closed forms, disk.hpp.  Also:
+// Hertz by the ring quadrature (a radial_profile of its pressure: what hertz
+// cost before its closed forms), a weighted sum of closed-form profiles, and
+// the coupling inverses ε(𝓕) and 𝓣(𝓕) at the forces of the same ratios.
 //   ./build/release/benchmarks/bench_profiles
 #include <benchmark/benchmark.h>
 
@@ -58,18 +61,59 @@ struct thin_annulus : spinslide::annulus<> {
   thin_annulus() : spinslide::annulus<>(0.9) {}
 };
 
+// p ∝ √(1 − r²) by the ring quadrature.
+auto hertz_by_quadrature() {
+  return spinslide::make_radial_profile<double>(
+      [](double r, double one_minus_r) { return std::sqrt(one_minus_r * (1 + r)); });
+}
+void quadrature_hertz(benchmark::State& state) { pairs(state, hertz_by_quadrature()); }
+
+struct hertz_plus_boussinesq
+    : spinslide::weighted_sum<double, spinslide::hertz<>, spinslide::boussinesq<>> {
+  hertz_plus_boussinesq()
+      : spinslide::weighted_sum<double, spinslide::hertz<>, spinslide::boussinesq<>>(
+            {0.7, 0.3}, spinslide::hertz<>(), spinslide::boussinesq<>()) {}
+};
+
+// ε(𝓕) and 𝓣(𝓕) = 𝓣(ε(𝓕)) at the forces of the benchmark's ratios.
+template <class P, bool Curve>
+void inverse(benchmark::State& state) {
+  const P profile;
+  std::vector<double> forces;
+  for (double x : inputs()) {
+    const double f = profile.force(x);
+    if (f < 1) forces.push_back(f);
+  }
+  for (auto _ : state) {
+    for (double f : forces) {
+      const double r =
+          Curve ? spinslide::torque_at_force(profile, f) : spinslide::ratio_from_force(profile, f);
+      benchmark::DoNotOptimize(r);
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(forces.size()));
+}
+
 BENCHMARK_TEMPLATE(exact, spinslide::uniform_disk<>);
 BENCHMARK_TEMPLATE(exact, cd_annulus);
 BENCHMARK_TEMPLATE(exact, thin_annulus);
 BENCHMARK_TEMPLATE(exact, spinslide::ring<>);
 BENCHMARK_TEMPLATE(exact, spinslide::hertz<>);
 BENCHMARK_TEMPLATE(exact, spinslide::boussinesq<>);
+BENCHMARK_TEMPLATE(exact, hertz_plus_boussinesq);
+BENCHMARK(quadrature_hertz);
 BENCHMARK_TEMPLATE(tabulated, spinslide::uniform_disk<>);
 BENCHMARK_TEMPLATE(tabulated, cd_annulus);
 BENCHMARK_TEMPLATE(tabulated, thin_annulus);
 BENCHMARK_TEMPLATE(tabulated, spinslide::ring<>);
 BENCHMARK_TEMPLATE(tabulated, spinslide::hertz<>);
 BENCHMARK_TEMPLATE(tabulated, spinslide::boussinesq<>);
+BENCHMARK_TEMPLATE(inverse, spinslide::uniform_disk<>, false);
+BENCHMARK_TEMPLATE(inverse, spinslide::hertz<>, false);
+BENCHMARK_TEMPLATE(inverse, spinslide::boussinesq<>, false);
+BENCHMARK_TEMPLATE(inverse, spinslide::uniform_disk<>, true);
+BENCHMARK_TEMPLATE(inverse, spinslide::hertz<>, true);
+BENCHMARK_TEMPLATE(inverse, spinslide::boussinesq<>, true);
 
 }  // namespace
 

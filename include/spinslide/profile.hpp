@@ -16,6 +16,7 @@
 #define SPINSLIDE_PROFILE_HPP
 
 #include <spinslide/detail/checks.hpp>
+#include <spinslide/detail/elastic_closed_forms.hpp>
 #include <spinslide/detail/ring_kernel.hpp>
 #include <spinslide/disk.hpp>
 #include <spinslide/profile_base.hpp>
@@ -123,7 +124,10 @@ class annulus : public profile_base<annulus<Real, Policy>, Real, Policy> {
 };
 
 /// Hertz pressure p ∝ √(1 − r²): an elastic sphere pressed on a flat.
-/// ⟨r⟩ = 3π/16, ⟨1/r⟩ = 3π/4, ⟨r²⟩ = 2/5.
+/// ⟨r⟩ = 3π/16, ⟨1/r⟩ = 3π/4, ⟨r²⟩ = 2/5.  Closed forms (docs/theory.md §6,
+/// (E1)–(E3)): for ε ≤ 1, 𝓕 = (3π/32)ε(4 − ε²) and 𝓣 = (3π/128)(8 − 8ε² + 3ε⁴);
+/// for ε > 1, elementary in asin(1/ε) and √(ε² − 1), and a series in 1/ε²
+/// where those cancel.  Within 4 ulp in double, derivatives within 16.
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class hertz : public profile_base<hertz<Real, Policy>, Real, Policy> {
  public:
@@ -133,25 +137,35 @@ class hertz : public profile_base<hertz<Real, Policy>, Real, Policy> {
   Real mean_inverse_radius() const { return 3 * boost::math::constants::pi<Real>() / 4; }
   /// ⟨r²⟩ = 2/5.
   Real mean_square_radius() const { return Real(2) / 5; }
+  /// 𝓕′(ε) for ε ∈ [0, ∞] (𝓕′(0) = 3π/8, 𝓕′(∞) = 0); NaN or ε < 0 is a
+  /// domain error through the policy.
+  Real force_derivative(Real eps) const {
+    return detail::checked_elastic_derivatives<detail::hertz_load>(
+               eps, "spinslide::hertz<%1%>::force_derivative(%1%)", Policy())
+        .force;
+  }
+  /// 𝓣′(ε) = −ε𝓕′(ε) for ε ∈ [0, ∞) (0 at both ends); as force_derivative().
+  Real torque_derivative(Real eps) const {
+    return detail::checked_elastic_derivatives<detail::hertz_load>(
+               eps, "spinslide::hertz<%1%>::torque_derivative(%1%)", Policy())
+        .torque;
+  }
 
  private:
   friend class profile_base<hertz, Real, Policy>;
   static constexpr const char* name = "spinslide::hertz<%1%>";
-  // Ring quadrature (theory §6), relative error ≲ 1e-13.
   force_torque_result<Real> general(Real eps) const {
-    // Load per unit radius 3 r √(1 − r²), normalised: ∫₀¹ 3r√(1−r²) dr = 1.
-    auto w = [](const detail::ring_node<Real>& n) {
-      BOOST_MATH_STD_USING
-      return 3 * n.r * sqrt(n.one_minus_r * (1 + n.r));
-    };
-    return detail::ring_integral(w, Real(0), eps, detail::kernel_policy<Policy>());
+    return detail::elastic_at<detail::hertz_load>(eps, false);
   }
 };
 
 /// Boussinesq pressure p ∝ 1/√(1 − r²): a rigid flat punch on an elastic
 /// half-space, with an integrable singularity at the rim.
-/// ⟨r⟩ = π/4, ⟨1/r⟩ = π/2, ⟨r²⟩ = 2/3.  For ε ≥ 1, 𝓕 = (asin k/k + √(1−k²))/2
-/// with k = 1/ε (theory (B1)), which the tests use as a check.
+/// ⟨r⟩ = π/4, ⟨1/r⟩ = π/2, ⟨r²⟩ = 2/3.  Closed forms (docs/theory.md §6,
+/// (B1), (B2), (E3)): for ε ≤ 1, 𝓕 = πε/4 and 𝓣 = (π/8)(2 − ε²); for ε ≥ 1,
+/// 𝓕 = (εA + √(ε²−1)/ε)/2 and 𝓣 = ((2 − ε²)A + √(ε²−1))/4 with A = asin(1/ε),
+/// and a series in 1/ε² where those cancel.  Within 4 ulp in double,
+/// derivatives within 16.
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class boussinesq : public profile_base<boussinesq<Real, Policy>, Real, Policy> {
  public:
@@ -161,18 +175,25 @@ class boussinesq : public profile_base<boussinesq<Real, Policy>, Real, Policy> {
   Real mean_inverse_radius() const { return boost::math::constants::pi<Real>() / 2; }
   /// ⟨r²⟩ = 2/3.
   Real mean_square_radius() const { return Real(2) / 3; }
+  /// 𝓕′(ε) for ε ∈ [0, ∞] (π/4 for ε ≤ 1, 𝓕′(∞) = 0); NaN or ε < 0 is a
+  /// domain error through the policy.
+  Real force_derivative(Real eps) const {
+    return detail::checked_elastic_derivatives<detail::boussinesq_load>(
+               eps, "spinslide::boussinesq<%1%>::force_derivative(%1%)", Policy())
+        .force;
+  }
+  /// 𝓣′(ε) = −ε𝓕′(ε) for ε ∈ [0, ∞) (0 at both ends); as force_derivative().
+  Real torque_derivative(Real eps) const {
+    return detail::checked_elastic_derivatives<detail::boussinesq_load>(
+               eps, "spinslide::boussinesq<%1%>::torque_derivative(%1%)", Policy())
+        .torque;
+  }
 
  private:
   friend class profile_base<boussinesq, Real, Policy>;
   static constexpr const char* name = "spinslide::boussinesq<%1%>";
-  // Ring quadrature (theory §6), relative error ≲ 1e-13.
   force_torque_result<Real> general(Real eps) const {
-    // Load per unit radius r/√(1 − r²), normalised.
-    auto w = [](const detail::ring_node<Real>& n) {
-      BOOST_MATH_STD_USING
-      return n.r / sqrt(n.one_minus_r * (1 + n.r));
-    };
-    return detail::ring_integral(w, Real(0), eps, detail::kernel_policy<Policy>());
+    return detail::elastic_at<detail::boussinesq_load>(eps, false);
   }
 };
 

@@ -1,0 +1,251 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//
+// The closed forms of the Hertz and Boussinesq profiles (profile.hpp,
+// detail/elastic_closed_forms.hpp; docs/theory.md §6) against
+//  - tests/reference/elastic_reference.csv: ring-kernel quadrature in
+//    cpp_bin_float_50 (generate_elastic_reference.cpp), 229 ratios per
+//    profile including both sides of every branch point, with 𝓕′ by
+//    finite differences of the quadrature;
+//  - tests/reference/profile_reference.csv: the 2-D area integrals;
+//  - exact values and limits: 𝓕(1), 𝓣(1), ε𝓣 → ⟨r²⟩/2, ε³𝓕′ → 2a₁;
+// in float, double, long double and cpp_bin_float_50, and densely in double
+// against the cpp_bin_float_50 evaluation (itself checked against the
+// quadrature to 1e-38).
+#include <gtest/gtest.h>
+
+#include <spinslide/spinslide.hpp>
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/next.hpp>
+#include <boost/math/special_functions/ulp.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "reference/csv.hpp"
+
+#ifndef SPINSLIDE_ELASTIC_REFERENCE
+#error "SPINSLIDE_ELASTIC_REFERENCE must name tests/reference/elastic_reference.csv"
+#endif
+
+namespace {
+
+using namespace spinslide;
+using big = boost::multiprecision::cpp_bin_float_50;
+
+struct elastic_row {
+  std::string profile;
+  double eps;
+  big force, torque, force_derivative;
+};
+
+const std::vector<elastic_row>& elastic_reference() {
+  static const std::vector<elastic_row> rows = [] {
+    std::vector<elastic_row> r;
+    for (const auto& c : spinslide_reference::read_csv_rows(SPINSLIDE_ELASTIC_REFERENCE))
+      r.push_back({c.at(0), std::strtod(c.at(1).c_str(), nullptr), big(c.at(2)), big(c.at(3)),
+                   big(c.at(4))});
+    return r;
+  }();
+  return rows;
+}
+
+// |computed − exact| in ulps of the result type at the exact value.
+template <class Real>
+double ulps(Real computed, const big& exact) {
+  const Real rounded = static_cast<Real>(exact);
+  const big fraction = (exact - big(rounded)) / big(boost::math::ulp(rounded));
+  return std::fabs(static_cast<double>(boost::math::float_distance(computed, rounded)) +
+                   static_cast<double>(fraction));
+}
+
+// The largest error of each of 𝓕, 𝓣, 𝓕′, 𝓣′ over the reference, in ulps of Real.
+struct worst_ulps {
+  double force = 0, torque = 0, force_derivative = 0, torque_derivative = 0;
+};
+
+template <class Real, class Profile>
+void accumulate(const Profile& p, const elastic_row& row, worst_ulps& w) {
+  const Real e = static_cast<Real>(row.eps);
+  ASSERT_EQ(static_cast<double>(e), row.eps) << "the reference ratio must be exact in the type";
+  const auto ft = p.force_torque(e);
+  const big e_big = row.eps;
+  w.force = std::max(w.force, ulps(ft.force, row.force));
+  w.torque = std::max(w.torque, ulps(ft.torque, row.torque));
+  w.force_derivative =
+      std::max(w.force_derivative, ulps(p.force_derivative(e), row.force_derivative));
+  w.torque_derivative = std::max(w.torque_derivative,
+                                 ulps(p.torque_derivative(e), big(-e_big * row.force_derivative)));
+}
+
+// The row at `row.eps` rounded to Real, from the cpp_bin_float_50 evaluation
+// (checked against the quadrature to 1e-38 below) where rounding changes ε.
+template <class Real>
+elastic_row at_ratio_of(const elastic_row& row) {
+  const Real e = static_cast<Real>(row.eps);
+  if (static_cast<double>(e) == row.eps) return row;
+  const big eb = static_cast<double>(e);
+  if (row.profile == "hertz") {
+    const auto ft = hertz<big>().force_torque(eb);
+    return {row.profile, static_cast<double>(e), ft.force, ft.torque,
+            hertz<big>().force_derivative(eb)};
+  }
+  const auto ft = boussinesq<big>().force_torque(eb);
+  return {row.profile, static_cast<double>(e), ft.force, ft.torque,
+          boussinesq<big>().force_derivative(eb)};
+}
+
+template <class Real>
+void expect_within(double values, double derivatives) {
+  worst_ulps h, b;
+  for (const auto& r : elastic_reference()) {
+    const elastic_row row = at_ratio_of<Real>(r);
+    if (row.profile == "hertz") accumulate<Real>(hertz<Real>(), row, h);
+    if (row.profile == "boussinesq") accumulate<Real>(boussinesq<Real>(), row, b);
+  }
+  for (const auto* w : {&h, &b}) {
+    const char* name = w == &h ? "hertz" : "boussinesq";
+    EXPECT_LE(w->force, values) << name;
+    EXPECT_LE(w->torque, values) << name;
+    EXPECT_LE(w->force_derivative, derivatives) << name;
+    EXPECT_LE(w->torque_derivative, derivatives) << name;
+    std::printf("%-10s %-12s largest error in ulps: F %.2f  T %.2f  F' %.2f  T' %.2f\n", name,
+                typeid(Real).name(), w->force, w->torque, w->force_derivative,
+                w->torque_derivative);
+  }
+}
+
+TEST(ElasticProfiles, ReferenceCoversBothProfilesAndEveryBranchPoint) {
+  std::size_t hertz_rows = 0, boussinesq_rows = 0, at_branch_points = 0;
+  for (const auto& row : elastic_reference()) {
+    hertz_rows += row.profile == "hertz";
+    boussinesq_rows += row.profile == "boussinesq";
+    for (double x : {1.0, 1.3, 1.5})
+      at_branch_points +=
+          row.eps == x || row.eps == std::nextafter(x, 0.0) || row.eps == std::nextafter(x, 2.0);
+  }
+  EXPECT_EQ(hertz_rows, 229U);
+  EXPECT_EQ(boussinesq_rows, 229U);
+  // 1, 13/10, 3/2 and their neighbours, for both profiles; 1 is also on the log grid.
+  EXPECT_EQ(at_branch_points, 20U);
+}
+
+TEST(ElasticProfiles, DoubleWithinFourUlpDerivativesWithinSixteen) { expect_within<double>(4, 16); }
+
+TEST(ElasticProfiles, FloatCorrectlyRoundedButForHalfAnUlp) { expect_within<float>(1, 1); }
+
+TEST(ElasticProfiles, LongDoubleWithinFourUlpDerivativesWithinSixteen) {
+  expect_within<long double>(4, 16);
+}
+
+// The quadrature is good to about 1e-40 (𝓕, 𝓣) and 1e-23 (its finite
+// difference, 𝓕′): cpp_bin_float_50 is checked to those.
+TEST(ElasticProfiles, MultiprecisionAgreesWithTheQuadrature) {
+  for (const auto& row : elastic_reference()) {
+    const big e = row.eps;
+    const bool is_hertz = row.profile == "hertz";
+    const auto ft = is_hertz ? hertz<big>().force_torque(e) : boussinesq<big>().force_torque(e);
+    const big d =
+        is_hertz ? hertz<big>().force_derivative(e) : boussinesq<big>().force_derivative(e);
+    EXPECT_LT(abs(ft.force / row.force - 1), big("1e-38")) << row.profile << " " << row.eps;
+    EXPECT_LT(abs(ft.torque / row.torque - 1), big("1e-38")) << row.profile << " " << row.eps;
+    EXPECT_LT(abs(d / row.force_derivative - 1), big("1e-21")) << row.profile << " " << row.eps;
+  }
+}
+
+// The 2-D area integrals, independent of the ring kernel.
+TEST(ElasticProfiles, DoubleAgreesWithTheAreaIntegrals) {
+  std::size_t rows = 0;
+  for (const auto& c : spinslide_reference::read_csv_rows(SPINSLIDE_PROFILE_REFERENCE, "profile")) {
+    if (c.at(0) != "hertz" && c.at(0) != "boussinesq") continue;
+    const double e = std::strtod(c.at(1).c_str(), nullptr);
+    const auto ft = c.at(0) == "hertz" ? hertz<>().force_torque(e) : boussinesq<>().force_torque(e);
+    EXPECT_LE(ulps(ft.force, big(c.at(3))), 4) << c.at(0) << " " << e;
+    EXPECT_LE(ulps(ft.torque, big(c.at(4))), 4) << c.at(0) << " " << e;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 134U);
+}
+
+// Between the reference ratios: 4000 log-uniform ratios in [1e-3, 1e6] and
+// 2000 uniform in [1, 3] (both sides of every branch), double against the
+// cpp_bin_float_50 evaluation.
+TEST(ElasticProfiles, DenselyWithinFourUlpOfMultiprecision) {
+  std::mt19937_64 rng(15);
+  std::uniform_real_distribution<double> decades(-3, 6), near_one(1, 3);
+  worst_ulps h, b;
+  for (int i = 0; i < 6000; ++i) {
+    const double e = i < 4000 ? std::pow(10.0, decades(rng)) : near_one(rng);
+    const big eb = e;
+    const auto hf = hertz<big>().force_torque(eb);
+    const auto bf = boussinesq<big>().force_torque(eb);
+    const elastic_row hr{"hertz", e, hf.force, hf.torque, hertz<big>().force_derivative(eb)};
+    const elastic_row br{"boussinesq", e, bf.force, bf.torque,
+                         boussinesq<big>().force_derivative(eb)};
+    accumulate<double>(hertz<>(), hr, h);
+    accumulate<double>(boussinesq<>(), br, b);
+  }
+  for (const auto* w : {&h, &b}) {
+    EXPECT_LE(w->force, 4);
+    EXPECT_LE(w->torque, 4);
+    EXPECT_LE(w->force_derivative, 16);
+    EXPECT_LE(w->torque_derivative, 16);
+    std::printf("dense %-10s largest error in ulps: F %.2f  T %.2f  F' %.2f  T' %.2f\n",
+                w == &h ? "hertz" : "boussinesq", w->force, w->torque, w->force_derivative,
+                w->torque_derivative);
+  }
+}
+
+// docs/theory.md (H1), (B2): 𝓕(1) and 𝓣(1) exactly, and the contact of the
+// two sides of ε = 1.
+TEST(ElasticProfiles, ValuesAtOneAreExact) {
+  const double pi = boost::math::constants::pi<double>();
+  EXPECT_LE(ulps(boussinesq<>().force(1.0), boost::math::constants::pi<big>() / 4), 1);
+  EXPECT_LE(ulps(boussinesq<>().torque(1.0), boost::math::constants::pi<big>() / 8), 1);
+  EXPECT_LE(ulps(hertz<>().force(1.0), 9 * boost::math::constants::pi<big>() / 32), 1);
+  EXPECT_LE(ulps(hertz<>().torque(1.0), 9 * boost::math::constants::pi<big>() / 128), 1);
+  const double above = std::nextafter(1.0, 2.0);
+  EXPECT_NEAR(boussinesq<>().torque(above), pi / 8, 4e-16);
+  EXPECT_NEAR(hertz<>().torque(above), 9 * pi / 128, 4e-16);
+}
+
+// As ε → ∞: 1 − 𝓕 = a₁/ε² + …, ε𝓣 → ⟨r²⟩/2, ε³𝓕′ → 2a₁, with a₁ = 1/10
+// (Hertz) and 1/6 (Boussinesq) from the expansion of E (theory (H3)).
+TEST(ElasticProfiles, LimitsAtLargeRatios) {
+  const big e("1e12");
+  const big h_one_minus_f = (1 - hertz<big>().force(e)) * e * e;
+  const big b_one_minus_f = (1 - boussinesq<big>().force(e)) * e * e;
+  EXPECT_LT(abs(h_one_minus_f * 10 - 1), big("1e-22"));
+  EXPECT_LT(abs(b_one_minus_f * 6 - 1), big("1e-22"));
+  EXPECT_LT(abs(hertz<big>().torque(e) * e * 5 - 1), big("1e-22"));
+  EXPECT_LT(abs(boussinesq<big>().torque(e) * e * 3 - 1), big("1e-22"));
+  EXPECT_LT(abs(hertz<big>().force_derivative(e) * e * e * e * 5 - 1), big("1e-22"));
+  EXPECT_LT(abs(boussinesq<big>().force_derivative(e) * e * e * e * 3 - 1), big("1e-22"));
+  for (double x : {1e100, 1e300}) {
+    EXPECT_DOUBLE_EQ(hertz<>().torque(x) * x, 0.2);
+    EXPECT_DOUBLE_EQ(boussinesq<>().torque(x) * (x / 3), 1.0 / 9);
+  }
+}
+
+TEST(ElasticProfiles, DerivativesAtTheEndsAndBadRatios) {
+  const double pi = boost::math::constants::pi<double>();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_DOUBLE_EQ(hertz<>().force_derivative(0.0), hertz<>().mean_inverse_radius() / 2);
+  EXPECT_DOUBLE_EQ(boussinesq<>().force_derivative(0.0), pi / 4);
+  EXPECT_EQ(hertz<>().torque_derivative(0.0), 0.0);
+  EXPECT_EQ(hertz<>().force_derivative(inf), 0.0);
+  EXPECT_EQ(boussinesq<>().torque_derivative(inf), 0.0);
+  EXPECT_THROW(hertz<>().force_derivative(-1.0), std::domain_error);
+  EXPECT_THROW(boussinesq<>().torque_derivative(std::nan("")), std::domain_error);
+  using quiet = boost::math::policies::policy<
+      boost::math::policies::domain_error<boost::math::policies::ignore_error>>;
+  EXPECT_TRUE(std::isnan(hertz<double, quiet>().force_derivative(-1.0)));
+}
+
+}  // namespace
