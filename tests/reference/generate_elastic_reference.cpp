@@ -50,7 +50,7 @@ struct pair {
 
 // The ring kernel at radius r, ratio ε.
 pair kernel(const big& r, const big& eps) {
-  const big two_div_pi = boost::math::constants::two_div_pi<big>();
+  const big& two_div_pi = boost::math::constants::two_div_pi<big>();
   if (r == eps) return {two_div_pi, two_div_pi * eps};
   const bool inside = r < eps;
   const big c = inside ? big(r / eps) : big(eps / r);
@@ -66,7 +66,7 @@ pair integrate(bool hertz, const big& eps) {
   using std::cos;
   using std::sin;
   static boost::math::quadrature::tanh_sinh<big> q(12);
-  const big half_pi = boost::math::constants::half_pi<big>();
+  const big& half_pi = boost::math::constants::half_pi<big>();
   const big tol("1e-40");
   auto weight = [hertz](const big& phi) {
     const big c = cos(phi);
