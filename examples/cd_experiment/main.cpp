@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
     const std::string path = dir + "/cd_frames.csv";
     write_frames(path, frames);
     std::printf("filmed at %g frames/s with %g mm and %g rad of tracking noise: %s\n", fps,
-                position_noise * 1e3, angle_noise, path.c_str());
+                tracking_noise.position * 1e3, tracking_noise.angle, path.c_str());
     return analyse(read_frames(path), dir, true);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cd_experiment: %s\n", e.what());
