@@ -10,6 +10,7 @@
 //
 //   cd_sweep [--seeds N] [--first S] [--threads T] [--fit-frames K]
 //            [--evaluate-at I] [--noise-scale X] [--no-window-correction]
+//            [--correction-iterations K]
 //
 // --noise-scale 0 films without tracking noise: what is left is the
 // analysis's own (discretisation) bias.  Progress goes to stderr.
@@ -40,16 +41,18 @@ struct sweep_options {
 // torque's only.
 struct estimator {
   const char* name;
-  bool weighted;
+  bool corrected, weighted;
   estimates use;
 };
 const estimator estimators[] = {
-    {"equal weights, both", false, estimates::both},
-    {"equal weights, force", false, estimates::force},
-    {"equal weights, torque", false, estimates::torque},
-    {"weighted, both", true, estimates::both},
-    {"weighted, force", true, estimates::force},
-    {"weighted, torque", true, estimates::torque},
+    {"the authors': uncorrected, equal weights, both", false, false, estimates::both},
+    {"uncorrected, equal weights, force", false, false, estimates::force},
+    {"uncorrected, equal weights, torque", false, false, estimates::torque},
+    {"uncorrected, weighted, both", false, true, estimates::both},
+    {"corrected, equal weights, both", true, false, estimates::both},
+    {"corrected, weighted, both (the analysis)", true, true, estimates::both},
+    {"corrected, weighted, force", true, true, estimates::force},
+    {"corrected, weighted, torque", true, true, estimates::torque},
 };
 constexpr std::size_t n_estimators = sizeof(estimators) / sizeof(estimators[0]);
 
@@ -60,29 +63,39 @@ struct throw_result {
 
 struct seed_result {
   std::vector<mu_fit> fits;
-  std::vector<throw_result> throws;
+  std::vector<throw_result> raw_throws, throws;  // without and with the window correction
   ratio_summary ratio;
   noise_estimate noise;
 };
 
+std::vector<throw_result> per_throw(const std::vector<measured>& m, const noise_estimate& noise) {
+  std::vector<throw_result> out;
+  for (const auto& r : m) {
+    const double mu = true_a + true_b * r.n;
+    const pair_covariance c = covariance(r, noise, mu);
+    const ratio_point p = ratio_test_point(r, noise);
+    out.push_back({r.eps, r.mu_from_force / mu - 1, r.mu_from_torque / mu - 1,
+                   (r.mu_from_force - mu) / std::sqrt(c.ff),
+                   (r.mu_from_torque - mu) / std::sqrt(c.tt), p.d / std::sqrt(p.var_d)});
+  }
+  return out;
+}
+
 seed_result run_seed(unsigned seed, const sweep_options& opt) {
   const film_noise noise = {tracking_noise.position * opt.noise_scale,
                             tracking_noise.angle * opt.noise_scale};
-  const std::vector<measured> m =
-      measure(simulate(opt.throws, seed, noise), opt.analysis, /*quiet=*/true);
+  const throws_t frames = simulate(opt.throws, seed, noise);
+  const std::vector<measured> raw = measure(frames, opt.analysis, /*quiet=*/true);
+  const std::vector<measured> m = measure_corrected(frames, opt.analysis, /*quiet=*/true);
   seed_result out;
-  for (const estimator& e : estimators)
-    out.fits.push_back(e.weighted ? weighted_fit(m, e.use) : pooled_fit(m, e.use));
+  for (const estimator& e : estimators) {
+    const std::vector<measured>& data = e.corrected ? m : raw;
+    out.fits.push_back(e.weighted ? weighted_fit(data, e.use) : pooled_fit(data, e.use));
+  }
   out.noise = pooled_noise(m);
   out.ratio = ratio_test(m, out.noise);
-  for (const auto& r : m) {
-    const double mu = true_a + true_b * r.n;
-    const pair_covariance c = covariance(r, out.noise, mu);
-    const ratio_point p = ratio_test_point(r, out.noise);
-    out.throws.push_back({r.eps, r.mu_from_force / mu - 1, r.mu_from_torque / mu - 1,
-                          (r.mu_from_force - mu) / std::sqrt(c.ff),
-                          (r.mu_from_torque - mu) / std::sqrt(c.tt), p.d / std::sqrt(p.var_d)});
-  }
+  out.raw_throws = per_throw(raw, pooled_noise(raw));
+  out.throws = per_throw(m, out.noise);
   return out;
 }
 
@@ -94,18 +107,19 @@ struct moments {
   double sd() const { return std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1))); }
 };
 
-void print_bands(const std::vector<seed_result>& results) {
+void print_bands(const std::vector<seed_result>& results, bool corrected) {
   const double edges[] = {0, 0.5, 0.8, 2, 1e300};
   std::printf(
-      "\nper throw, by the measured eps: (mu_hat - mu)/mu, mean and sd, and the sd of\n"
-      "z = (mu_hat - mu)/sd_propagated (1 if the weights are right)\n");
+      "\nper throw, %s, by the measured eps: (mu_hat - mu)/mu, mean and sd,\n"
+      "and the sd of z = (mu_hat - mu)/sd_propagated (1 if the weights are right)\n",
+      corrected ? "window-corrected" : "uncorrected (as the authors measured)");
   std::printf(
       "| eps band | throws | force: mean | sd | sd(z) | torque: mean | sd | sd(z) |"
       " T/F: sd(z) |\n|---|---|---|---|---|---|---|---|---|\n");
   for (int k = 0; k < 4; ++k) {
     moments f, t, zf, zt, zr;
     for (const auto& s : results)
-      for (const auto& r : s.throws)
+      for (const auto& r : corrected ? s.throws : s.raw_throws)
         if (r.eps >= edges[k] && r.eps < edges[k + 1]) {
           f.add(r.rel_force), t.add(r.rel_torque), zf.add(r.z_force), zt.add(r.z_torque);
           zr.add(r.ratio_z);
@@ -214,7 +228,8 @@ int main(int argc, char** argv) {
     std::vector<std::thread> pool;
     for (int w = 0; w < opt.threads; ++w) pool.emplace_back(work, w);
     for (auto& th : pool) th.join();
-    print_bands(results);
+    print_bands(results, false);
+    if (opt.analysis.window_correction) print_bands(results, true);
     print_estimators(results);
     print_summary(results);
   } catch (const std::exception& e) {
