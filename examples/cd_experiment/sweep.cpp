@@ -194,6 +194,8 @@ sweep_options parse(int argc, char** argv) {
       o.noise_scale = std::stod(value());
     else if (a == "--no-window-correction")
       o.analysis.window_correction = false;
+    else if (a == "--correction-iterations")
+      o.analysis.correction_iterations = std::stoi(value());
     else
       throw std::runtime_error("unknown argument " + a);
   }
