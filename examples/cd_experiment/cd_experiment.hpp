@@ -117,6 +117,7 @@ inline throws_t simulate(int n_throws, unsigned seed, film_noise noise_sd = trac
     const auto stop = spinslide::simulate_throw_si(cd, R, mu, g, gamma_cd, v0, w0);
     const std::vector<double> t = frame_times(stop.time);
     std::vector<double> t_scaled;
+    t_scaled.reserve(t.size());
     for (const double tk : t) t_scaled.push_back(tk / units.time_scale());
     const auto motion = spinslide::trajectory(cd, gamma_cd, v0 / units.velocity_scale(),
                                               w0 / units.spin_scale(), t_scaled);
@@ -372,6 +373,7 @@ inline mu_fit solve(const std::vector<block>& blocks, bool scale) {
 // σ² from the residuals.
 inline mu_fit pooled_fit(const std::vector<measured>& m, estimates use = estimates::both) {
   std::vector<block> blocks;
+  blocks.reserve(m.size());
   for (const auto& r : m)
     blocks.push_back({double(r.n), r.mu_from_force, r.mu_from_torque,
                       use != estimates::torque ? 1.0 : 0.0, use != estimates::force ? 1.0 : 0.0,

@@ -228,6 +228,7 @@ int main(int argc, char** argv) {
       }
     };
     std::vector<std::thread> pool;
+    pool.reserve(static_cast<std::size_t>(opt.threads));
     for (int w = 0; w < opt.threads; ++w) pool.emplace_back(work, w);
     for (auto& th : pool) th.join();
     print_bands(results, false);

@@ -18,7 +18,8 @@
 // and prints every number the paper states beside the computed value.  The
 // PNG files need gnuplot (Debian: gnuplot-nox); without it only the CSV files
 // are written.
-//   fig5_experiment.png        Fig. 5: the simulated CD experiment's measured
+//   fig5_experiment.png        Fig. 5: the simulated CD experiment, the
+//                              measured T/F against eps (no mu needed) and
 //                              F and T over the theory curves
 //                              (examples/cd_experiment, docs/experiment.md)
 #include <spinslide/spinslide.hpp>
