@@ -11,10 +11,9 @@
 // of 1.5 cm diameter (an annulus, b = 0.125, γ = (1 + b²)/2), friction
 // coefficient μ = 0.202 + 0.00053 n for throw n = 1..N (the paper's fit),
 // hand-thrown: v0 uniform in [0.4, 1.2] m/s, ω0 uniform in [5, 30] rad/s, any
-// direction.  The motion is integrated with spinslide's SI odeint system
-// (Boost.Odeint dopri5) and filmed at 25 frames/s up to the exact stop time,
-// with tracking noise: 0.5 mm in each coordinate of the centre and 0.01 rad
-// in the angle (a sub-pixel tracker on PAL video of a 12 cm disk).
+// direction.  The motion is spinslide::trajectory's, filmed at 25 frames/s
+// up to the exact stop time, with tracking noise: 0.5 mm in each coordinate of the centre and 0.01
+// rad in the angle (a sub-pixel tracker on PAL video of a 12 cm disk).
 //
 // Analysis (docs/experiment.md derives it).  For each throw, second-degree
 // polynomials are fitted to x(t), y(t) and θ(t) over the first 7 frames
@@ -22,7 +21,7 @@
 // the accelerations, hence
 //   μ𝓕 = −(a·v̂)/g,   μ𝓣 = −γRω̇/g,   ε = v/(Rω).
 // Then, beyond the authors' analysis:
-// - the window bias (the motion is not a parabola over 0.24 s: 𝓣 from the
+// - the window bias (the motion is not a parabola over 0.24 s: μ from the
 //   torque came out 1.9 % high at 0.8 ≤ ε < 2) is modelled by fitting the
 //   noise-free film of the throw's own motion and subtracted;
 // - each throw's μ from its force and from its torque (dividing by the
