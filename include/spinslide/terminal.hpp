@@ -21,8 +21,11 @@
 
 #include <boost/math/tools/toms748_solve.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
+#include <vector>
 
 namespace spinslide {
 
@@ -85,17 +88,36 @@ flow_terms<Real> flow_terms_at(const Profile& p, Real eps) {
           ft.torque >= small ? Real(eps * ft.torque) : sq_half};
 }
 
+// The pull h γ = γ𝓕/(ε𝓣) at ε ∈ [0, ∞], so that g = f/ε = 1 − pull.  Finite
+// at both ends: γ⟨1/r⟩/(2⟨r⟩) at 0 and 2γ/⟨r²⟩ at ∞.
+template <class Profile, class Real>
+Real flow_pull(const Profile& p, Real eps, Real gamma) {
+  const auto t = flow_terms_at(p, eps);
+  return t.torque >= boost::math::tools::min_value<Real>()
+             ? Real(gamma * t.force_over_ratio / t.torque)
+             : Real(gamma * t.force / t.ratio_torque);
+}
+
 // g(ε) = f(ε)/ε = 1 − γ𝓕/(ε𝓣): f's sign without f's factor ε, and finite
 // at both ends: g(0) = 1 − γ⟨1/r⟩/(2⟨r⟩), g(∞) = 1 − 2γ/⟨r²⟩.  A pull
 // γ𝓕/(ε𝓣) beyond the type's range gives −max_value, not −∞.
 template <class Profile, class Real>
 Real flow_over_ratio(const Profile& p, Real eps, Real gamma) {
-  const auto t = flow_terms_at(p, eps);
-  const Real pull = t.torque >= boost::math::tools::min_value<Real>()
-                        ? Real(gamma * t.force_over_ratio / t.torque)
-                        : Real(gamma * t.force / t.ratio_torque);
-  const Real g = 1 - pull;
+  const Real g = 1 - flow_pull(p, eps, gamma);
   return g >= -boost::math::tools::max_value<Real>() ? g : -boost::math::tools::max_value<Real>();
+}
+
+// The sign of g = 1 − pull where it is resolved: +1 where ε grows, −1 where
+// it shrinks, and 0 where |g| ≤ √ε_mach (1.5e-8 for double): there g is not
+// known to have a sign.  At an edge of the window, e.g. Hertz at γ = 1/2,
+// g's departure from 0 near ε = 0 is below the accuracy of the profile's
+// quadrature (measured: up to 5e-13 at ε ~ 1e-10), and the signs of those
+// errors would make false zeros.
+template <class Real>
+int flow_sign(const Real& pull) {
+  BOOST_MATH_STD_USING
+  static const Real noise = sqrt(boost::math::tools::epsilon<Real>());
+  return pull < 1 - noise ? 1 : (pull > 1 + noise ? -1 : 0);
 }
 
 // Which ends of (0, ∞) attract the flow.  At an exact edge of the window
@@ -122,23 +144,162 @@ Real flow_zero(const Profile& p, Real gamma, Real lo, Real hi, const Policy& pol
   return (r.first + r.second) / 2;
 }
 
-// Follows the flow from ε (g(ε) ≠ 0) to the next sign change of g in the
-// direction of motion, by steps of a factor 4 (bounded by the exponent range).
-// Returns false if the flow runs to 0 or ∞ instead.
+// From ε (g(ε) ≠ 0), steps of a factor 4 up or down to the first ratio
+// where g has the other sign (unlike flow_sign, any sign), within the
+// exponent range: `near` and `far` are the last two ratios tried.  False if
+// there is none.
 template <class Profile, class Real>
-bool bracket_next_zero(const Profile& p, Real gamma, Real eps, Real& lo, Real& hi) {
+bool walk_to_sign_change(const Profile& p, Real gamma, Real eps, bool up, Real& near, Real& far) {
   const Real big = boost::math::tools::max_value<Real>() / 8;
   const Real tiny = boost::math::tools::min_value<Real>() * 8;
-  if (flow_over_ratio(p, eps, gamma) > 0) {  // ε grows
-    lo = eps;
-    for (hi = 4 * eps; hi < big; lo = hi, hi *= 4)
-      if (flow_over_ratio(p, hi, gamma) < 0) return true;
-  } else {  // ε shrinks
-    hi = eps;
-    for (lo = eps / 4; lo > tiny; hi = lo, lo /= 4)
-      if (flow_over_ratio(p, lo, gamma) > 0) return true;
+  const bool grows = flow_pull(p, eps, gamma) < 1;
+  for (near = eps, far = up ? Real(4 * eps) : Real(eps / 4); up ? far < big : far > tiny;
+       near = far, far = up ? Real(4 * far) : Real(far / 4)) {
+    const Real pull = flow_pull(p, far, gamma);
+    if (grows ? pull > 1 : pull < 1) return true;
   }
   return false;
+}
+
+// Follows the flow from ε (g(ε) ≠ 0) to the next sign change of g in the
+// direction of motion, by steps of a factor 4 (bounded by the exponent range):
+// lo < hi.  Returns false if the flow runs to 0 or ∞ instead.  Steps of a
+// factor 4 can jump over a pair of zeros: the march below checks them.
+template <class Profile, class Real>
+bool bracket_next_zero(const Profile& p, Real gamma, Real eps, Real& lo, Real& hi) {
+  const bool up = flow_over_ratio(p, eps, gamma) > 0;
+  Real near, far;
+  if (!walk_to_sign_change(p, gamma, eps, up, near, far)) return false;
+  lo = up ? near : far;
+  hi = up ? far : near;
+  return true;
+}
+
+// A sign change of g: a zero of the flow between lo and hi, attracting if g > 0 below it and < 0
+// above it.
+template <class Real>
+struct flow_bracket {
+  Real lo;
+  Real hi;
+  bool attracting;
+};
+
+// The ratios the march below covers with its proof (docs/theory.md §8, "Every
+// zero"): [ε_mach/(4⟨1/r⟩), 4√(⟨r²⟩/ε_mach)].  A ring of mass m at radius a
+// has m/a ≤ ⟨1/r⟩ and ma² ≤ ⟨r²⟩, so every ring heavier than ε_mach of the
+// load lies inside; beyond, only the parity of the zeros is known.  A model
+// with an infinite moment falls back on ⟨r⟩.
+template <class Profile>
+std::pair<typename Profile::value_type, typename Profile::value_type> flow_window(
+    const Profile& p) {
+  using Real = typename Profile::value_type;
+  BOOST_MATH_STD_USING
+  const Real e = boost::math::tools::epsilon<Real>();
+  const Real inv = p.mean_inverse_radius(), sq = p.mean_square_radius();
+  Real lo = (boost::math::isfinite)(inv) ? Real(e / (4 * inv)) : Real(e * p.mean_radius());
+  Real hi = (boost::math::isfinite)(sq) ? Real(4 * sqrt(sq / e)) : Real(p.mean_radius() / e);
+  lo = (std::max)(lo, Real(boost::math::tools::min_value<Real>() * 8));
+  hi = (std::min)(hi, Real(boost::math::tools::max_value<Real>() / 8));
+  return {lo, hi};
+}
+
+// Collects the sign changes of g met by a march, in the order met: each is
+// bracketed by the last ratio with one resolved sign and the first with the
+// other (ratios where the sign is not resolved lie between them).
+template <class Real>
+struct sign_changes {
+  bool up;      // the march's direction
+  int last;     // the last resolved sign of g met (0: none yet)
+  Real before;  // where it was met
+  std::vector<flow_bracket<Real>>& out;
+
+  // Adds the sample (ε, sign of g there); true if it completes a sign change.
+  bool add(const Real& eps, int sign) {
+    if (sign == 0) return false;
+    const bool change = last != 0 && sign != last;
+    if (change) out.push_back({up ? before : eps, up ? eps : before, (up ? last : sign) > 0});
+    last = sign;
+    before = eps;
+    return change;
+  }
+};
+
+// Every sign change of g between `from` and `to` (either order), appended to
+// `out` in the order met; with first_only, only the first.  The march works
+// in s = ln ε with the certificate of docs/theory.md §8: since 𝓕 grows and 𝓣
+// falls (I2), φ = ln(γ𝓕/(ε𝓣)) = ln(γ𝓕/𝓣) − s has slope ≥ −1, so a ratio
+// with φ > 0 (g < 0) proves g < 0 on the next φ upwards, and one with φ < 0
+// (g > 0) proves g > 0 on the next |φ| downwards.  Each step is one such
+// proof (7/8 of it, for rounding), from either end; where |φ| is below
+// 1/64 the march samples every 1/64 and sees only sign changes.
+template <class Profile, class Real>
+void march_flow(const Profile& p, Real gamma, Real from, Real to, bool first_only,
+                std::vector<flow_bracket<Real>>& out) {
+  BOOST_MATH_STD_USING
+  const bool up = to > from;
+  const Real resolution = Real(1) / 64, share = Real(7) / 8;
+  // How far in s towards `to` (dir = 1) or back (dir = −1) the pull proves g's sign.
+  auto reach = [&](const Real& pull, int dir) {
+    const Real r = (up == (dir > 0) ? 1 : -1) * log(pull);
+    return r > 0 ? Real(share * r) : Real(0);
+  };
+  Real eps = from, pull = flow_pull(p, from, gamma), trial = resolution;
+  sign_changes<Real> found{up, flow_sign(pull), from, out};
+  while (eps != to) {
+    const Real left = abs(log(to) - log(eps)), ahead = reach(pull, 1);
+    const Real step = (std::min)(ahead >= resolution ? ahead : trial, left);
+    Real next = step == left ? to : Real(eps * exp(up ? step : -step));
+    if (up ? next > to : next < to) next = to;
+    const Real next_pull = flow_pull(p, next, gamma);
+    if (ahead < step && reach(next_pull, -1) < step && step > resolution) {
+      trial = step / 2;  // neither end proves the step: halve it
+      continue;
+    }
+    eps = next;
+    pull = next_pull;
+    trial = 2 * step;
+    if (found.add(eps, flow_sign(pull)) && first_only) return;
+  }
+}
+
+// Below and above flow_window: one zero where g's sign at the window's end
+// differs from its limit's (found by steps of a factor 4).  And if nothing
+// was found though both ends repel (so that the number of zeros is odd), the
+// zero bracketed from ε = 1, where |g| stayed below flow_sign's noise level.
+template <class Profile, class Real>
+void add_outer_zeros(const Profile& p, Real gamma, std::pair<Real, Real> window,
+                     std::vector<flow_bracket<Real>>& out) {
+  Real near, far;
+  const int at_zero = flow_sign(flow_pull(p, Real(0), gamma));
+  if (at_zero != 0 && flow_sign(flow_pull(p, window.first, gamma)) == -at_zero &&
+      walk_to_sign_change(p, gamma, window.first, false, near, far))
+    out.insert(out.begin(), flow_bracket<Real>{far, near, at_zero > 0});
+  const int at_inf = flow_sign(flow_pull(p, std::numeric_limits<Real>::infinity(), gamma));
+  const int at_hi = flow_sign(flow_pull(p, window.second, gamma));
+  if (at_inf != 0 && at_hi == -at_inf &&
+      walk_to_sign_change(p, gamma, window.second, true, near, far))
+    out.push_back({near, far, at_hi > 0});
+  const auto ends = attracting_ends(p, gamma);
+  if (out.empty() && !ends.first && !ends.second && flow_over_ratio(p, Real(1), gamma) != 0 &&
+      bracket_next_zero(p, gamma, Real(1), near, far))
+    out.push_back({near, far, true});
+}
+
+// Every sign change of g on (0, ∞), ascending: the march over flow_window,
+// then add_outer_zeros.
+template <class Profile, class Real>
+std::vector<flow_bracket<Real>> flow_sign_changes(const Profile& p, Real gamma) {
+  const auto w = flow_window(p);
+  std::vector<flow_bracket<Real>> out;
+  march_flow(p, gamma, w.first, w.second, false, out);
+  add_outer_zeros(p, gamma, w, out);
+  return out;
+}
+
+// The zero of a sign change, to full precision.
+template <class Profile, class Real, class Policy>
+Real refine_zero(const Profile& p, Real gamma, const flow_bracket<Real>& b, const Policy& pol) {
+  return flow_zero(p, gamma, b.lo, b.hi, pol);
 }
 
 }  // namespace detail
@@ -164,11 +325,94 @@ Real ratio_flow(const Profile& profile, Real eps, Real inertia_ratio) {
   return eps - gamma * ft.force / ft.torque;
 }
 
+namespace detail {
+
+// The one attractor of a flow whose ends repel: its one zero.  The bracket
+// grown from ε = 1 is refined where the march found that zero alone (as
+// before the march existed, so that these results kept their last bit) or
+// none (a zero where |g| stays below flow_sign's noise level, just inside an
+// edge of the window), else the march's.
+template <class Profile, class Real, class Policy>
+terminal_state<Real> only_zero(const Profile& p, Real gamma,
+                               const std::vector<flow_bracket<Real>>& zeros, const Policy& pol) {
+  if (flow_over_ratio(p, Real(1), gamma) == 0) return {terminal_regime::sliding_and_spinning, 1};
+  Real lo, hi;
+  if (zeros.size() <= 1 && bracket_next_zero(p, gamma, Real(1), lo, hi))
+    return {terminal_regime::sliding_and_spinning, flow_zero(p, gamma, lo, hi, pol)};
+  if (zeros.size() == 1)
+    return {terminal_regime::sliding_and_spinning, refine_zero(p, gamma, zeros.front(), pol)};
+  const Real bad = boost::math::policies::raise_evaluation_error<Real>(
+      "spinslide::terminal_motion<%1%>(profile, %1%)",
+      "No zero of the ratio flow found for inertia_ratio = %1%.", gamma, pol);
+  return {terminal_regime::sliding_and_spinning, bad};
+}
+
+// The attractor the flow reaches from ε (g(ε) ≠ 0): the first sign change of
+// g in the direction of motion, else 0 or ∞.  The factor-4 bracket from ε is
+// refined where the march finds no other zero between ε and its far end (as
+// before the march existed); else the march's first zero.
+template <class Profile, class Real, class Policy>
+terminal_state<Real> reached_from(const Profile& p, Real gamma, Real eps, const Policy& pol) {
+  const bool up = flow_over_ratio(p, eps, gamma) > 0;
+  std::vector<flow_bracket<Real>> found;
+  Real lo, hi;
+  if (bracket_next_zero(p, gamma, eps, lo, hi)) {
+    march_flow(p, gamma, eps, up ? hi : lo, false, found);
+    if (found.size() <= 1)
+      return {terminal_regime::sliding_and_spinning, flow_zero(p, gamma, lo, hi, pol)};
+  } else {
+    const auto w = flow_window(p);
+    march_flow(p, gamma, eps, up ? (std::max)(eps, w.second) : (std::min)(eps, w.first), true,
+               found);
+  }
+  if (!found.empty())
+    return {terminal_regime::sliding_and_spinning, refine_zero(p, gamma, found.front(), pol)};
+  return up ? terminal_state<Real>{terminal_regime::pure_sliding,
+                                   std::numeric_limits<Real>::infinity()}
+            : terminal_state<Real>{terminal_regime::pure_spinning, Real(0)};
+}
+
+}  // namespace detail
+
+/// A zero ε₀ of the flow f at which f changes sign, and whether it attracts
+/// (f > 0 below it and f < 0 above it) or repels.
+template <class Real>
+struct ratio_flow_zero {
+  Real ratio;       ///< ε₀
+  bool attracting;  ///< true: the flow from either side ends at ε₀
+};
+
+/// Every zero of f(ε) = ε − γ𝓕/𝓣 on (0, ∞) at which f changes sign, ascending,
+/// each to full precision and classified.  They alternate: between two
+/// attracting zeros lies a repelling one, whose sides flow to different ends.
+/// Found by a march in ln ε that cannot step over a pair of zeros
+/// (docs/theory.md §8, "Every zero": what it proves and what it assumes).  A
+/// double zero (f touches 0 without changing sign) is not reported.  γ not
+/// finite and > 0 is a domain error (the result is then one NaN zero).
+template <class Profile, class Real>
+std::vector<ratio_flow_zero<Real>> terminal_ratios(const Profile& profile, Real inertia_ratio) {
+  static_assert(detail::requires_profile<Profile>());
+  using Policy = typename Profile::policy_type;
+  static const char* function = "spinslide::terminal_ratios<%1%>(profile, %1%)";
+  Real invalid = 0;
+  if (!detail::check(function, "inertia_ratio", inertia_ratio,
+                     detail::argument_rule::finite_positive, &invalid, Policy()))
+    return {{invalid, false}};
+  const Real& gamma = inertia_ratio;  // checked above
+  std::vector<ratio_flow_zero<Real>> zeros;
+  for (const auto& b : detail::flow_sign_changes(profile, gamma))
+    zeros.push_back({detail::refine_zero(profile, gamma, b, Policy()), b.attracting});
+  return zeros;
+}
+
 /// The terminal regime for a motion that starts sliding and spinning
-/// (0 < ε < ∞), and the limit of ε.  If both ends of the flow attract (possible
-/// only when the load is concentrated near the centre), the outcome depends
-/// on the initial ratio: that is a domain error here; use the overload below.
-/// γ not finite and > 0 is a domain error.
+/// (0 < ε < ∞), and the limit of ε, where that does not depend on the initial
+/// ratio: the flow has one attractor (0, ∞ or one zero ε₀).  If it has more
+/// (both ends attract, possible only when the load is concentrated near the
+/// centre; or f has several attracting zeros, possible for a load on thin
+/// rings: terminal_ratios lists them), the outcome depends on the initial
+/// ratio: that is a domain error here; use the overload below.  γ not
+/// finite and > 0 is a domain error.
 template <class Profile, class Real>
 terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio) {
   static_assert(detail::requires_profile<Profile>());
@@ -180,35 +424,30 @@ terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio)
     return {terminal_regime::sliding_and_spinning, invalid};
   const Real& gamma = inertia_ratio;  // checked above
   const auto ends = detail::attracting_ends(profile, gamma);
-  const Real inf = std::numeric_limits<Real>::infinity();
-  if (ends.first && ends.second) {
+  const auto zeros = detail::flow_sign_changes(profile, gamma);
+  const auto attractors =
+      std::count_if(zeros.begin(), zeros.end(), [](const auto& z) { return z.attracting; }) +
+      int(ends.first) + int(ends.second);
+  if (attractors > 1) {
     const Real bad = detail::raise_argument_error(
         function, "inertia_ratio",
-        "one for which not both eps -> 0 and eps -> infinity attract (for this one the outcome "
+        "one for which the flow of eps has one attractor (for this one it has several, among "
+        "eps -> 0, eps -> infinity and the zeros listed by terminal_ratios, and the outcome "
         "depends on the initial ratio: use the overload that takes it)",
         gamma, Policy());
     return {terminal_regime::sliding_and_spinning, bad};
   }
   if (ends.first) return {terminal_regime::pure_spinning, Real(0)};
-  if (ends.second) return {terminal_regime::pure_sliding, inf};
-  if (detail::flow_over_ratio(profile, Real(1), gamma) == 0)
-    return {terminal_regime::sliding_and_spinning, Real(1)};
-  Real lo, hi;
-  if (!detail::bracket_next_zero(profile, gamma, Real(1), lo, hi)) {
-    const Real bad = boost::math::policies::raise_evaluation_error<Real>(
-        function, "No zero of the ratio flow found for inertia_ratio = %1%.", gamma, Policy());
-    return {terminal_regime::sliding_and_spinning, bad};
-  }
-  if (!(lo < hi)) std::swap(lo, hi);
-  return {terminal_regime::sliding_and_spinning,
-          detail::flow_zero(profile, gamma, lo, hi, Policy())};
+  if (ends.second) return {terminal_regime::pure_sliding, std::numeric_limits<Real>::infinity()};
+  return detail::only_zero(profile, gamma, zeros, Policy());
 }
 
 /// The terminal regime reached from a given initial ratio ε_i = v0/(Rω0) ∈ [0, ∞]:
 /// 0 and ∞ stay where they are (pure spinning and pure sliding are invariant),
 /// a zero of f stays there, and otherwise ε follows the flow to the next zero
-/// of f in its direction of motion, or to 0 or ∞.  (Steps of a factor 4 find
-/// the next zero; two zeros closer than that would be missed.)
+/// of f in its direction of motion (an attracting one), or to 0 or ∞.  The
+/// zero is found by the march of terminal_ratios, which cannot step over a
+/// pair of zeros.
 template <class Profile, class Real>
 terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio,
                                      Real initial_ratio) {
@@ -223,19 +462,12 @@ terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio,
                      &invalid, Policy()))
     return {terminal_regime::sliding_and_spinning, invalid};
   const Real& gamma = inertia_ratio;  // checked above
-  const Real inf = std::numeric_limits<Real>::infinity();
   if (initial_ratio == 0) return {terminal_regime::pure_spinning, Real(0)};
-  if ((boost::math::isinf)(initial_ratio)) return {terminal_regime::pure_sliding, inf};
-  const Real g = detail::flow_over_ratio(profile, initial_ratio, gamma);
-  if (g == 0) return {terminal_regime::sliding_and_spinning, initial_ratio};
-  Real lo, hi;
-  if (detail::bracket_next_zero(profile, gamma, initial_ratio, lo, hi)) {
-    if (!(lo < hi)) std::swap(lo, hi);
-    return {terminal_regime::sliding_and_spinning,
-            detail::flow_zero(profile, gamma, lo, hi, Policy())};
-  }
-  return g > 0 ? terminal_state<Real>{terminal_regime::pure_sliding, inf}
-               : terminal_state<Real>{terminal_regime::pure_spinning, Real(0)};
+  if ((boost::math::isinf)(initial_ratio))
+    return {terminal_regime::pure_sliding, std::numeric_limits<Real>::infinity()};
+  if (detail::flow_over_ratio(profile, initial_ratio, gamma) == 0)
+    return {terminal_regime::sliding_and_spinning, initial_ratio};
+  return detail::reached_from(profile, gamma, initial_ratio, Policy());
 }
 
 /// ε₀ of the paper: the uniform disk with γ = 1/2, ε₀ = 0.65300178920559763898…
