@@ -9,10 +9,14 @@
 #include <boost/math/special_functions/relative_difference.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "flow_zeros_reference.hpp"
 #include "quadrature_moments.hpp"
 #include "reference/csv.hpp"
 
@@ -20,6 +24,10 @@ namespace {
 
 using namespace spinslide;
 using mp = boost::multiprecision::cpp_bin_float_50;
+using spinslide_reference::expected_attractor;
+using spinslide_reference::flow_case;
+using spinslide_reference::reference_flow_cases;
+using spinslide_reference::with_load;
 
 // ε₀ from tests/reference/terminal_ratio.txt: the zero of ε − 𝓕/(2𝓣) with 𝓕,
 // 𝓣 from 100-digit quadrature of the area integrals.
@@ -171,6 +179,124 @@ TEST(TerminalMotion, BistableProfileDependsOnTheInitialRatio) {
   EXPECT_THROW(terminal_motion(p, g), std::domain_error);
   EXPECT_EQ(terminal_motion(p, g, 1e-6).regime, terminal_regime::pure_spinning);
   EXPECT_EQ(terminal_motion(p, g, 1e6).regime, terminal_regime::pure_sliding);
+}
+
+TEST(TerminalRatios, EveryZeroMatchesTheIndependentScanOfTheRingIntegral) {
+  const auto cases = reference_flow_cases();
+  ASSERT_EQ(cases.size(), 10u);
+  for (const auto& c : cases) {
+    with_load(c.load, [&](const auto& p) {
+      const auto zeros = terminal_ratios(p, c.gamma);
+      ASSERT_EQ(zeros.size(), c.zeros.size()) << c.load << " " << c.gamma;
+      for (std::size_t i = 0; i < zeros.size(); ++i) {
+        EXPECT_LE(boost::math::relative_difference(zeros[i].ratio, c.zeros[i].ratio), 1e-12)
+            << c.load << " " << c.gamma << " zero " << i;
+        EXPECT_EQ(zeros[i].attracting, c.zeros[i].attracting) << c.load << " " << c.gamma;
+      }
+    });
+  }
+}
+
+// terminal_motion(p, γ, e) against the reference attractor of e.
+template <class P>
+void expect_reaches(const P& p, const flow_case& c, double e) {
+  const double expected = expected_attractor(c, e);
+  const auto t = terminal_motion(p, c.gamma, e);
+  const std::string where =
+      c.load + " gamma " + std::to_string(c.gamma) + " from " + std::to_string(e);
+  const terminal_regime regime = expected == 0          ? terminal_regime::pure_spinning
+                                 : std::isinf(expected) ? terminal_regime::pure_sliding
+                                                        : terminal_regime::sliding_and_spinning;
+  EXPECT_EQ(t.regime, regime) << where;
+  if (regime == terminal_regime::sliding_and_spinning) {
+    EXPECT_LE(boost::math::relative_difference(t.ratio, expected), 1e-12) << where;
+  }
+}
+
+// The example: from ε = 0.05 the flow stops at the first zero, 0.1005.
+TEST(TerminalMotion, FromAnInitialRatioStopsAtTheFirstZeroItMeets) {
+  const auto cases = reference_flow_cases();
+  for (const auto& c : cases) {
+    std::vector<double> starts{0.05, c.zeros.front().ratio / 2, c.zeros.back().ratio * 2};
+    for (std::size_t i = 0; i + 1 < c.zeros.size(); ++i)
+      starts.push_back(std::sqrt(c.zeros[i].ratio * c.zeros[i + 1].ratio));
+    with_load(c.load, [&](const auto& p) {
+      for (double e : starts) expect_reaches(p, c, e);
+    });
+  }
+}
+
+// The number of attractors of a reference case: its attracting zeros, and
+// ε → 0 or ε → ∞ where the limits g(0), g(∞) of docs/theory.md §8 say so,
+// from ⟨r⟩, ⟨1/r⟩, ⟨r²⟩ of each load by hand (a ring of radius a has a,
+// 1/a, a²; a uniform disk of radius a has 2a/3, 2/a, a²/2).
+long attractors_of(const flow_case& c) {
+  struct moments {
+    double mean, inverse, square;
+  };
+  moments m{0.1 * 2 * 0.15 / 3 + 0.9, 0.1 * 2 / 0.15 + 0.9, 0.1 * 0.15 * 0.15 / 2 + 0.9};
+  if (c.load == "two_rings") m = {0.1 * 0.1 + 0.9, 0.1 / 0.1 + 0.9, 0.1 * 0.01 + 0.9};
+  if (c.load == "three_rings")
+    m = {0.01 * 0.01 + 0.09 * 0.1 + 0.9, 0.01 / 0.01 + 0.09 / 0.1 + 0.9,
+         0.01 * 1e-4 + 0.09 * 0.01 + 0.9};
+  const bool zero_attracts = 1 - c.gamma * m.inverse / (2 * m.mean) < 0;
+  const bool infinity_attracts = 1 - 2 * c.gamma / m.square > 0;
+  return std::count_if(c.zeros.begin(), c.zeros.end(), [](const auto& z) { return z.attracting; }) +
+         int(zero_attracts) + int(infinity_attracts);
+}
+
+// Without an initial ratio: a domain error wherever the flow has more than one
+// attractor, else that attractor.
+template <class P>
+void expect_domain_error(const P& p, const flow_case& c) {
+  EXPECT_THROW(terminal_motion(p, c.gamma), std::domain_error) << c.load << " " << c.gamma;
+}
+
+template <class P>
+void expect_outcome(const P& p, const flow_case& c, bool many) {
+  if (many) {
+    expect_domain_error(p, c);
+    return;
+  }
+  ASSERT_EQ(c.zeros.size(), 1u);
+  const auto t = terminal_motion(p, c.gamma);
+  EXPECT_EQ(t.regime, terminal_regime::sliding_and_spinning);
+  EXPECT_LE(boost::math::relative_difference(t.ratio, c.zeros[0].ratio), 1e-12) << c.load;
+}
+
+TEST(TerminalMotion, SeveralAttractorsAreADomainError) {
+  int unique = 0, several = 0;
+  for (const auto& c : reference_flow_cases()) {
+    const bool many = attractors_of(c) > 1;
+    (many ? several : unique) += 1;
+    with_load(c.load, [&](const auto& p) { expect_outcome(p, c, many); });
+  }
+  EXPECT_EQ(unique, 3);
+  EXPECT_EQ(several, 7);
+}
+
+// The zeros of the built-in profiles in their windows: one, attracting, the
+// ε₀ of terminal_motion; outside the windows none (and the paper's ε₀).
+TEST(TerminalRatios, OneAttractingZeroInTheWindowOfEveryBuiltInProfile) {
+  const auto disk = terminal_ratios(uniform_disk<>(), 0.5);
+  ASSERT_EQ(disk.size(), 1u);
+  EXPECT_TRUE(disk[0].attracting);
+  EXPECT_LE(boost::math::epsilon_difference(
+                disk[0].ratio, std::strtod(reference_terminal_ratio().c_str(), nullptr)),
+            2);
+  EXPECT_TRUE(terminal_ratios(uniform_disk<>(), 0.2).empty());  // below the window
+  EXPECT_TRUE(terminal_ratios(uniform_disk<>(), 0.7).empty());  // above it
+  const auto b = terminal_ratios(boussinesq<>(), 0.5);
+  ASSERT_EQ(b.size(), 1u);
+  // docs/theory.md §8: ε₀ = 1.  Boussinesq's quadrature is accurate to ~1e-13,
+  // and the march's bracket is not terminal_motion's: 1e-12 here.
+  EXPECT_NEAR(b[0].ratio, 1.0, 1e-12);
+  EXPECT_TRUE(terminal_ratios(ring<>(), 0.5).empty());  // the lower edge: pure sliding
+}
+
+TEST(TerminalRatios, BadInputIsADomainError) {
+  for (double g : {0.0, -1.0, double(NAN), double(INFINITY)})
+    EXPECT_THROW(terminal_ratios(uniform_disk<>(), g), std::domain_error) << g;
 }
 
 TEST(TerminalMotion, BadInputIsADomainError) {
