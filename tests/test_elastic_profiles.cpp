@@ -101,6 +101,16 @@ elastic_row at_ratio_of(const elastic_row& row) {
           boussinesq<big>().force_derivative(eb)};
 }
 
+void expect_worst(const worst_ulps& w, const char* name, const char* type, double values,
+                  double derivatives) {
+  EXPECT_LE(w.force, values) << name;
+  EXPECT_LE(w.torque, values) << name;
+  EXPECT_LE(w.force_derivative, derivatives) << name;
+  EXPECT_LE(w.torque_derivative, derivatives) << name;
+  std::printf("%-10s %-12s largest error in ulps: F %.2f  T %.2f  F' %.2f  T' %.2f\n", name, type,
+              w.force, w.torque, w.force_derivative, w.torque_derivative);
+}
+
 template <class Real>
 void expect_within(double values, double derivatives) {
   worst_ulps h, b;
@@ -109,16 +119,8 @@ void expect_within(double values, double derivatives) {
     if (row.profile == "hertz") accumulate<Real>(hertz<Real>(), row, h);
     if (row.profile == "boussinesq") accumulate<Real>(boussinesq<Real>(), row, b);
   }
-  for (const auto* w : {&h, &b}) {
-    const char* name = w == &h ? "hertz" : "boussinesq";
-    EXPECT_LE(w->force, values) << name;
-    EXPECT_LE(w->torque, values) << name;
-    EXPECT_LE(w->force_derivative, derivatives) << name;
-    EXPECT_LE(w->torque_derivative, derivatives) << name;
-    std::printf("%-10s %-12s largest error in ulps: F %.2f  T %.2f  F' %.2f  T' %.2f\n", name,
-                typeid(Real).name(), w->force, w->torque, w->force_derivative,
-                w->torque_derivative);
-  }
+  expect_worst(h, "hertz", typeid(Real).name(), values, derivatives);
+  expect_worst(b, "boussinesq", typeid(Real).name(), values, derivatives);
 }
 
 TEST(ElasticProfiles, ReferenceCoversBothProfilesAndEveryBranchPoint) {
@@ -191,15 +193,8 @@ TEST(ElasticProfiles, DenselyWithinFourUlpOfMultiprecision) {
     accumulate<double>(hertz<>(), hr, h);
     accumulate<double>(boussinesq<>(), br, b);
   }
-  for (const auto* w : {&h, &b}) {
-    EXPECT_LE(w->force, 4);
-    EXPECT_LE(w->torque, 4);
-    EXPECT_LE(w->force_derivative, 16);
-    EXPECT_LE(w->torque_derivative, 16);
-    std::printf("dense %-10s largest error in ulps: F %.2f  T %.2f  F' %.2f  T' %.2f\n",
-                w == &h ? "hertz" : "boussinesq", w->force, w->torque, w->force_derivative,
-                w->torque_derivative);
-  }
+  expect_worst(h, "hertz", "dense double", 4, 16);
+  expect_worst(b, "boussinesq", "dense double", 4, 16);
 }
 
 // docs/theory.md (H1), (B2): 𝓕(1) and 𝓣(1) exactly, and the contact of the

@@ -204,7 +204,7 @@ struct hertz_load {
 template <class Load, class Real>
 force_torque_result<Real> elastic_at(Real eps, bool derivative) {
   using W = elastic_arithmetic<Real>;
-  const W e = eps;
+  const W& e = eps;  // float: a double temporary; otherwise eps itself
   const W series_start =
       derivative ? elastic_derivative_series_start<W>() : elastic_series_start<W>();
   force_torque_result<W> r;
