@@ -9,6 +9,7 @@
 #define SPINSLIDE_SPINSLIDE_HPP
 
 #include <spinslide/approximations.hpp>
+#include <spinslide/batch_throws.hpp>
 #include <spinslide/contact.hpp>
 #include <spinslide/coupling.hpp>
 #include <spinslide/cylinder.hpp>
