@@ -9,6 +9,10 @@
 //     (v, ω) system of dimensionless_motion, with the stop located as the
 //     first zero of v by bisection on the dense output.
 // Also prints the baseline's largest relative error against spinslide.
+// And many throws at once (batch_throws.hpp), as throws per second on one
+// thread against all cores (std::thread::hardware_concurrency()), over the
+// same throws: stop_results of the integration (the 256 throws above) and of
+// the tabulated throw (65536 throws, ε as above); wall-clock time.
 //   ./build/release/benchmarks/bench_dynamics
 #include <benchmark/benchmark.h>
 
@@ -19,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "ratio_reporter.hpp"
@@ -86,9 +91,54 @@ void simulate_throw_integration(benchmark::State& s) {
 }
 void odeint_dopri5_event_location(benchmark::State& s) { throws(s, odeint_stop_time); }
 
+const std::vector<spinslide::throw_start<double>>& starts(std::size_t n) {
+  static std::vector<spinslide::throw_start<double>> s;
+  if (s.size() != n) {
+    std::mt19937_64 rng(12);
+    std::uniform_real_distribution<double> u(-2, 2);
+    s.clear();
+    for (std::size_t i = 0; i < n; ++i) s.push_back({std::pow(10.0, u(rng)), 1.0});
+  }
+  return s;
+}
+
+template <class Batch>
+void batch(benchmark::State& s, std::size_t n, unsigned threads, Batch f) {
+  const auto& in = starts(n);
+  spinslide::batch_options o;
+  o.threads = threads;
+  for (auto _ : s) {
+    auto r = f(in, o);
+    benchmark::DoNotOptimize(r.data());
+  }
+  s.SetItemsProcessed(s.iterations() * static_cast<int64_t>(in.size()));
+}
+
+auto integrated = [](const std::vector<spinslide::throw_start<double>>& in,
+                     const spinslide::batch_options& o) {
+  return spinslide::stop_results(spinslide::uniform_disk<>(), 0.5, in, o);
+};
+const spinslide::tabulated_throw<spinslide::uniform_disk<>>& disk_table() {
+  static const spinslide::tabulated_throw<spinslide::uniform_disk<>> table(
+      spinslide::uniform_disk<>(), 0.5);
+  return table;
+}
+auto tabulated = [](const std::vector<spinslide::throw_start<double>>& in,
+                    const spinslide::batch_options& o) {
+  return spinslide::stop_results(disk_table(), in, o);
+};
+void batch_integrated_1_thread(benchmark::State& s) { batch(s, 256, 1, integrated); }
+void batch_integrated_all_cores(benchmark::State& s) { batch(s, 256, 0, integrated); }
+void batch_tabulated_1_thread(benchmark::State& s) { batch(s, 65536, 1, tabulated); }
+void batch_tabulated_all_cores(benchmark::State& s) { batch(s, 65536, 0, tabulated); }
+
 BENCHMARK(odeint_dopri5_event_location)->Unit(benchmark::kMicrosecond);
 BENCHMARK(simulate_throw_integration)->Unit(benchmark::kMicrosecond);
 BENCHMARK(stop_time_tabulated)->Unit(benchmark::kMicrosecond);
+BENCHMARK(batch_integrated_1_thread)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(batch_integrated_all_cores)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(batch_tabulated_1_thread)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(batch_tabulated_all_cores)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
@@ -103,7 +153,13 @@ int main(int argc, char** argv) {
       "largest relative difference from simulate_throw: odeint baseline %.2e, tabulated %.2e\n",
       worst_odeint, worst_table);
   benchmark::Initialize(&argc, argv);
-  spinslide_bench::ratio_reporter reporter("odeint_dopri5_event_location");
+  disk_table();  // built outside the timing
+  std::printf("all cores: %u threads (std::thread::hardware_concurrency())\n",
+              std::thread::hardware_concurrency());
+  spinslide_bench::ratio_reporter reporter(
+      "odeint_dopri5_event_location",
+      {{"batch_integrated_1_thread/real_time", "batch_integrated_all_cores/real_time"},
+       {"batch_tabulated_1_thread/real_time", "batch_tabulated_all_cores/real_time"}});
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   return 0;
