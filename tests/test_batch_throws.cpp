@@ -14,6 +14,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <deque>
 #include <limits>
@@ -33,6 +34,7 @@ std::vector<throw_start<double>> starts(std::size_t n) {
   std::mt19937_64 rng(20260516);
   std::uniform_real_distribution<double> decade(-3, 3), spin_decade(-2, 2);
   std::vector<throw_start<double>> s;
+  s.reserve(n + 3);
   for (std::size_t i = 0; i < n; ++i) {
     const double w0 = std::pow(10.0, spin_decade(rng));
     s.push_back({w0 * std::pow(10.0, decade(rng)), w0});
@@ -44,7 +46,12 @@ std::vector<throw_start<double>> starts(std::size_t n) {
 }
 
 // Bit for bit, NaN and infinities included.
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(double a, double b) {
+  std::uint64_t x = 0, y = 0;
+  std::memcpy(&x, &a, sizeof a);
+  std::memcpy(&y, &b, sizeof b);
+  return x == y;
+}
 
 void expect_same(const stop_result<double>& batch, const stop_result<double>& serial,
                  std::size_t i) {
@@ -61,6 +68,7 @@ const double gamma_cd = (1 + 0.125 * 0.125) / 2;
 TEST(BatchThrows, EqualTheSerialCallsBitForBitOnOneTwoAndFourThreads) {
   const auto in = starts(300);
   std::vector<stop_result<double>> serial;
+  serial.reserve(in.size());
   for (const auto& s : in) serial.push_back(simulate_throw(cd, gamma_cd, s.v0, s.omega0));
   for (const unsigned threads : {1U, 2U, 4U}) {
     for (const std::size_t chunk : {std::size_t(0), std::size_t(1), std::size_t(7)}) {

@@ -130,6 +130,8 @@ struct stops {
 stops stop_of(const starts_t& in, const spinslide::tabulated_throw<profile>& table,
               const std::string& method, const spinslide::batch_options& b) {
   stops out;
+  out.time.reserve(in.size());
+  out.distance.reserve(in.size());
   if (method == "table") {
     for (const auto& r : spinslide::stop_results(table, in, b)) {
       out.time.push_back(r.time);
@@ -155,6 +157,7 @@ spinslide::throw_start<double> start(double v0, double w0, double mu) {
 // first 7 frames, per unit noise.
 double release_slope_sd() {
   std::vector<double> t;
+  t.reserve(cd_experiment::default_fit_frames);
   for (int k = 0; k < cd_experiment::default_fit_frames; ++k) t.push_back(k / cd_experiment::fps);
   return std::sqrt(cd_experiment::design(t, 0).slope_var);
 }
