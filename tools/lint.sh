@@ -14,7 +14,8 @@
 #      editing anything), compiled as C++17 and again as C++20 with only
 #      -I include, as a user compiles them;
 #    - every test source: tests/**/*.cpp but tests/consume/ (the packaging
-#      tests' outside projects), today tests/*.cpp and tests/reference/*.cpp,
+#      tests' outside projects) and tests/compile_fail/ (sources that must
+#      not compile; their tests compile them with -DMISUSE=n), today tests/*.cpp and tests/reference/*.cpp,
 #      with the compile commands of a clang++ Debug configuration of the
 #      project (CMAKE_EXPORT_COMPILE_COMMANDS=ON, configured here in
 #      BUILD_DIR; nothing is built).  A test source missing from
@@ -98,7 +99,7 @@ tu="$out/all_headers.cpp"
 
 joblist=("headers:c++17" "headers:c++20")
 missing=()
-mapfile -t test_sources < <(find tests -name '*.cpp' -not -path 'tests/consume/*' | LC_ALL=C sort)
+mapfile -t test_sources < <(find tests -name '*.cpp' -not -path 'tests/consume/*' -not -path 'tests/compile_fail/*' | LC_ALL=C sort)
 for f in "${test_sources[@]}"; do
   if grep -qF "\"file\": \"$root/$f\"" "$db"; then
     joblist+=("$f")
