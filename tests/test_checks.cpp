@@ -51,6 +51,7 @@ TEST(Checks, RulesAcceptAndRejectTheirEdges) {
   const double inf = HUGE_VAL, min = std::numeric_limits<double>::min();
   const double sub = std::numeric_limits<double>::denorm_min();
   const double big = std::numeric_limits<double>::max() * std::numeric_limits<double>::epsilon();
+  const double pi = boost::math::constants::pi<double>();
   struct row {
     argument_rule rule;
     std::vector<double> yes, no;
@@ -64,6 +65,9 @@ TEST(Checks, RulesAcceptAndRejectTheirEdges) {
       {argument_rule::inner_ratio, {0.0, std::nextafter(1.0, 0.0)}, {1.0, -sub, nan}},
       {argument_rule::shrink_radius, {min, 1.0}, {sub, std::nextafter(1.0, 2.0), nan}},
       {argument_rule::throw_inertia_ratio, {min, big}, {sub, std::nextafter(big, inf), nan}},
+      {argument_rule::contact_half_angle,
+       {sub, pi},
+       {0.0, -sub, std::nextafter(pi, 4.0), inf, nan}},
   };
   for (const row& r : rows) {
     for (double x : r.yes) EXPECT_TRUE(satisfies(x, r.rule)) << x << " rule " << int(r.rule);
@@ -186,22 +190,30 @@ TEST(Checks, FunctionsNameThemselvesAndTheArgument) {
                       {"tilted_cylinder_friction<double>", "friction_coefficient = -0.25"});
   expect_domain_error([] { tilted_cylinder_friction(0.5, 0.05, 0.0, 0.2); },
                       {"tilted_cylinder_friction<double>", "radius = 0"});
-  expect_domain_error([] { tilted_cylinder_friction(0.5, 10.0, 0.06, 0.9); },
-                      {"tilted_cylinder_friction<double>", "kappa", "tips over"});
+  expect_domain_error([] { truncated_pressure_friction(0.5, 4.0, 0.0); },
+                      {"truncated_pressure_friction<double>", "contact_angle = 4", "(0, pi]"});
+  expect_domain_error([] { truncated_pressure_friction(0.5, 1.0, nan); },
+                      {"truncated_pressure_friction<double>", "direction = nan"});
   expect_domain_error([] { tilted_pressure_integrals(-0.5); },
                       {"tilted_pressure_integrals<double>", "eps = -0.5"});
 }
 
-// tilted_cylinder_friction and tilted_pressure_integrals (cylinder.hpp): NaN
-// for a bad argument and where the cylinder tips over.
+// tilted_cylinder_friction, truncated_pressure_friction and
+// tilted_pressure_integrals (cylinder.hpp): NaN for a bad argument; tipping
+// over is an outcome, not an error: NaN numbers and `tipped` whatever the
+// policy.
 template <class Policy>
 void cylinder_functions_return_nan() {
   const Policy pol;
   const auto c = tilted_cylinder_friction(0.5, -1.0, 0.06, 0.2, pol);
   EXPECT_TRUE(std::isnan(c.along) && std::isnan(c.sideways) && std::isnan(c.torque) &&
-              std::isnan(c.tilt_forward) && std::isnan(c.tilt_sideways));
-  const auto tips = tilted_cylinder_friction(0.5, 10.0, 0.06, 0.9, pol);
-  EXPECT_TRUE(std::isnan(tips.along) && std::isnan(tips.tilt_sideways));
+              std::isnan(c.centre_forward) && std::isnan(c.centre_sideways) &&
+              std::isnan(c.contact_angle));
+  const auto tips = tilted_cylinder_friction(2.0, 10.0, 0.06, 0.9, pol);
+  EXPECT_EQ(tips.contact, cylinder_contact::tipped);
+  EXPECT_TRUE(std::isnan(tips.along) && std::isnan(tips.centre_sideways));
+  const auto s = truncated_pressure_friction(0.5, 0.0, 0.0, pol);
+  EXPECT_TRUE(std::isnan(s.force_x) && std::isnan(s.torque) && std::isnan(s.centre));
   const auto i = tilted_pressure_integrals(nan, pol);
   EXPECT_TRUE(std::isnan(i.A) && std::isnan(i.B) && std::isnan(i.C));
 }

@@ -22,6 +22,7 @@
 #ifndef SPINSLIDE_DETAIL_CHECKS_HPP
 #define SPINSLIDE_DETAIL_CHECKS_HPP
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/policies/error_handling.hpp>
 #include <boost/math/policies/policy.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
@@ -41,7 +42,8 @@ enum class argument_rule {
   normal_positive,      ///< min_value ≤ x ≤ max_value (model parameters that are divided by)
   inner_ratio,          ///< 0 ≤ x < 1 (an inner radius in units of the contact radius)
   shrink_radius,        ///< min_value ≤ x ≤ 1 (a radius a profile is shrunk to)
-  throw_inertia_ratio  ///< min_value ≤ γ ≤ max_value·epsilon (a throw integrated to its stop)
+  throw_inertia_ratio,  ///< min_value ≤ γ ≤ max_value·epsilon (a throw integrated to its stop)
+  contact_half_angle    ///< 0 < x ≤ π (the half-angle of a contact segment of the unit disk)
 };
 
 template <class T>
@@ -67,6 +69,8 @@ bool satisfies(T x, argument_rule rule) {
       return x >= min_value<T>() && x <= 1;
     case argument_rule::throw_inertia_ratio:
       return x >= min_value<T>() && x <= max_value<T>() * epsilon<T>();
+    case argument_rule::contact_half_angle:
+      return x > 0 && x <= boost::math::constants::pi<T>();
   }
   return false;
 }
@@ -92,6 +96,8 @@ inline const char* requirement(argument_rule rule) {
       return "in [min_value, max_value*epsilon] (2.2e-308 to 4.0e292 for double): above it the "
              "rates gamma*F/T and gamma/T of the integration to the stop overflow, below it gamma "
              "has too few digits";
+    case argument_rule::contact_half_angle:
+      return "in (0, pi]";
   }
   return "";
 }
