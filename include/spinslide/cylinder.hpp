@@ -22,6 +22,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace spinslide {
@@ -167,7 +168,7 @@ segment_friction<Real> segment_friction_integrals(Real eps, Real theta, Real phi
   const Real u0 = eps * sin(phi), w0 = eps * cos(phi);
   const Real psi0 = fabs(u0) <= 1 ? Real(acos(u0)) : Real(-1);
   // du = sin ψ dψ; the chord's length element is already in J0, J1, J2.
-  auto part = [&](int k) {
+  auto part = [&](std::size_t k) {
     return integrate_segment(
                [&](Real psi) {
                  return Real(segment_weight(theta, psi) * sin(psi) *
