@@ -8,6 +8,10 @@
 
 #include <boost/math/special_functions/relative_difference.hpp>
 
+#include <string>
+
+#include "reference/csv.hpp"
+
 namespace {
 
 using namespace spinslide;
@@ -31,7 +35,8 @@ TEST(TiltedCylinder, ZeroHeightIsTheFlatDisk) {
     EXPECT_EQ(c.along, -force(e));
     EXPECT_EQ(c.sideways, 0.0);
     EXPECT_EQ(c.torque, -torque(e));
-    EXPECT_EQ(c.tilt_forward, 0.0);
+    EXPECT_EQ(c.centre_forward, 0.0);
+    EXPECT_EQ(c.contact, cylinder_contact::full);
   }
 }
 
@@ -44,22 +49,121 @@ TEST(TiltedCylinder, MomentBalanceAndSidewaysForce) {
     const double e = 1.0, kappa = 4 * mu * h / R;
     const auto c = tilted_cylinder_friction(e, h, R, mu);
     const auto I = tilted_pressure_integrals(e);
-    EXPECT_GT(c.tilt_forward, 0);
+    EXPECT_EQ(c.contact, cylinder_contact::full);
+    EXPECT_GT(c.centre_forward, 0);
     EXPECT_GT(c.sideways, prev);
     prev = c.sideways;
     // α = κ(−F_along), β = κ F_sideways: ∫x p = −h F_x, ∫y' p = −h F_y'.
-    EXPECT_NEAR(c.tilt_forward, -kappa * c.along, 1e-14);
-    EXPECT_NEAR(c.tilt_sideways, kappa * c.sideways, 1e-14);
-    EXPECT_NEAR(c.sideways, c.tilt_forward * I.B, 1e-15);
+    EXPECT_NEAR(4 * c.centre_forward, -kappa * c.along, 1e-14);
+    EXPECT_NEAR(4 * c.centre_sideways, kappa * c.sideways, 1e-14);
+    EXPECT_NEAR(c.sideways, 4 * c.centre_forward * I.B, 1e-15);
   }
 }
 
-TEST(TiltedCylinder, TippingAndBadInputAreDomainErrors) {
-  EXPECT_THROW(tilted_cylinder_friction(1.0, 0.2, 0.05, 0.3), std::domain_error);  // κ = 4.8
+TEST(TiltedCylinder, BadInputIsADomainError) {
   EXPECT_THROW(tilted_cylinder_friction(-1.0, 0.01, 0.05, 0.3), std::domain_error);
   EXPECT_THROW(tilted_cylinder_friction(1.0, -0.01, 0.05, 0.3), std::domain_error);
   EXPECT_THROW(tilted_cylinder_friction(1.0, 0.01, 0.0, 0.3), std::domain_error);
   EXPECT_THROW(tilted_cylinder_friction(1.0, 0.01, 0.05, std::nan("")), std::domain_error);
+  EXPECT_THROW(truncated_pressure_friction(1.0, 0.0, 0.0), std::domain_error);
+  EXPECT_THROW(truncated_pressure_friction(1.0, 3.2, 0.0), std::domain_error);
+  EXPECT_THROW(truncated_pressure_friction(HUGE_VAL, 1.0, 0.0), std::domain_error);
+}
+
+// The friction of a truncated linear pressure against the 50-digit
+// quadrature of its defining area integrals (tests/reference/
+// generate_cylinder_reference.cpp), thin segments and the whole face
+// (θ just below π) included.
+TEST(TruncatedPressure, MatchesTheAreaIntegralsIn50Digits) {
+  const auto rows = spinslide_reference::read_csv_rows(SPINSLIDE_CYLINDER_REFERENCE, "eps");
+  ASSERT_EQ(rows.size(), 6u);
+  for (const auto& r : rows) {
+    ASSERT_EQ(r.size(), 8u);
+    const double eps = std::stod(r[0]), theta = std::stod(r[1]), phi = std::stod(r[2]);
+    const auto f = truncated_pressure_friction(eps, theta, phi);
+    EXPECT_NEAR(f.centre, std::stod(r[4]), 1e-13) << eps << " " << theta;
+    EXPECT_NEAR(f.force_x, std::stod(r[5]), 1e-12) << eps << " " << theta;
+    EXPECT_NEAR(f.force_y, std::stod(r[6]), 1e-12) << eps << " " << theta;
+    EXPECT_NEAR(f.torque, std::stod(r[7]), 1e-12) << eps << " " << theta;
+  }
+}
+
+// At θ = π the pressure is 1 + n·r: the linear model with (α, β) = n,
+// F_x = −(𝓕 + βA), F_y = −αB, T = −(𝓣 + βC), centre of pressure R/4.
+TEST(TruncatedPressure, WholeFaceIsTheLinearTilt) {
+  const double pi = boost::math::constants::pi<double>();
+  for (double e : {0.3, 1.0, 2.5})
+    for (double phi : {0.0, 0.4, 1.3, 2.0}) {
+      const auto I = tilted_pressure_integrals(e);
+      const auto f = truncated_pressure_friction(e, pi, phi);
+      const double a = std::cos(phi), b = std::sin(phi);
+      EXPECT_NEAR(f.force_x, -(force(e) + b * I.A), 1e-12) << e << " " << phi;
+      EXPECT_NEAR(f.force_y, -a * I.B, 1e-12) << e << " " << phi;
+      EXPECT_NEAR(f.torque, -(torque(e) + b * I.C), 1e-12) << e << " " << phi;
+      EXPECT_NEAR(f.centre, 0.25, 1e-14);
+    }
+}
+
+// The moment balance holds in partial contact: the centre of pressure is
+// −λF (F per μN, λ = μh/R), inside the face; the rear lifts off only past
+// |centre| = R/4, and the answer is continuous there.
+TEST(TiltedCylinder, PartialContactBalancesTheMoment) {
+  for (double e : {0.5, 1.0, 2.0})
+    for (double lambda : {0.3, 0.6, 0.9, 1.02}) {
+      const auto c = tilted_cylinder_friction(e, lambda, 1.0, 1.0);
+      if (e > 1 && lambda > 1) {
+        EXPECT_EQ(c.contact, cylinder_contact::tipped);
+        continue;
+      }
+      const double r = std::hypot(c.centre_forward, c.centre_sideways);
+      EXPECT_NEAR(c.centre_forward, -lambda * c.along, 1e-9) << e << " " << lambda;
+      EXPECT_NEAR(c.centre_sideways, lambda * c.sideways, 1e-9) << e << " " << lambda;
+      EXPECT_LT(r, 1.0);
+      EXPECT_EQ(c.contact, r > 0.25 ? cylinder_contact::partial : cylinder_contact::full);
+      EXPECT_EQ(c.contact == cylinder_contact::full, c.contact_angle == 3.141592653589793);
+    }
+}
+
+TEST(TiltedCylinder, LiftOffIsContinuous) {
+  for (double e : {0.7, 1.0, 3.0}) {
+    double lo = 0.01, hi = 2.0;  // full at lo, not at hi
+    for (int i = 0; i < 60; ++i) {
+      const double mid = (lo + hi) / 2;
+      (tilted_cylinder_friction(e, mid, 1.0, 1.0).contact == cylinder_contact::full ? lo : hi) =
+          mid;
+    }
+    const auto a = tilted_cylinder_friction(e, lo, 1.0, 1.0);
+    const auto b = tilted_cylinder_friction(e, hi, 1.0, 1.0);
+    EXPECT_EQ(b.contact, cylinder_contact::partial);
+    EXPECT_NEAR(std::hypot(a.centre_forward, a.centre_sideways), 0.25, 1e-12);
+    EXPECT_NEAR(a.along, b.along, 1e-9) << e;
+    EXPECT_NEAR(a.sideways, b.sideways, 1e-9) << e;
+    EXPECT_NEAR(a.torque, b.torque, 1e-9) << e;
+    EXPECT_NEAR(a.centre_sideways, b.centre_sideways, 1e-9) << e;
+  }
+}
+
+// Tipping.  For ε > 1 the branch of equilibria reaches the rim as λ → 1: the
+// centre of pressure there is at the rim point where the velocity points
+// outwards (sin φ = 1/ε) and |F| → 1.  At ε = 1 it folds at λ = 1.0377
+// (h = 17.3 cm for μ = 0.3, R = 5 cm, the case).  For ε < 1 it
+// never reaches the rim.  For ε = ∞, F = −e_v: tipping at λ = 1 exactly.
+TEST(TiltedCylinder, TippingIsAnOutcome) {
+  const auto near = tilted_cylinder_friction(2.0, 0.9999, 1.0, 1.0);
+  EXPECT_EQ(near.contact, cylinder_contact::partial);
+  EXPECT_NEAR(std::atan2(near.centre_sideways, near.centre_forward), std::asin(0.5), 1e-2);
+  EXPECT_GT(std::hypot(near.centre_forward, near.centre_sideways), 0.999);
+  EXPECT_EQ(tilted_cylinder_friction(2.0, 1.0, 1.0, 1.0).contact, cylinder_contact::tipped);
+  EXPECT_EQ(tilted_cylinder_friction(1.0, 0.1729, 0.05, 0.3).contact, cylinder_contact::partial);
+  const auto tipped = tilted_cylinder_friction(1.0, 0.1730, 0.05, 0.3);
+  EXPECT_EQ(tipped.contact, cylinder_contact::tipped);
+  EXPECT_TRUE(std::isnan(tipped.along) && std::isnan(tipped.centre_forward));
+  EXPECT_EQ(tilted_cylinder_friction(0.5, 3.0, 1.0, 1.0).contact, cylinder_contact::partial);
+  const auto slide = tilted_cylinder_friction(HUGE_VAL, 0.6, 1.0, 1.0);
+  EXPECT_EQ(slide.contact, cylinder_contact::partial);
+  EXPECT_EQ(slide.along, -1.0);
+  EXPECT_EQ(slide.centre_forward, 0.6);
+  EXPECT_EQ(tilted_cylinder_friction(HUGE_VAL, 1.0, 1.0, 1.0).contact, cylinder_contact::tipped);
 }
 
 }  // namespace
