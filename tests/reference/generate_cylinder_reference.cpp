@@ -18,7 +18,7 @@
 // endpoint complement for a left end |a| ≥ 1/2) and mapped onto [0, 1] (for
 // multiprecision it can trip an internal BOOST_ASSERT otherwise).
 //   ./build/release/tests/generate_cylinder_reference > tests/reference/cylinder_reference.csv
-// (about half a minute per row on one core; the rows are fixed below).
+// (about a minute per row; the rows are fixed below).
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
