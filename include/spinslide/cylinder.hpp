@@ -7,6 +7,10 @@
 /// at the contact makes a tipping moment about the centre of mass, at height
 /// h, which tilts the pressure — higher at the front — and the tilted
 /// pressure turns part of the friction sideways, along v × ω: the path curves.
+/// Past a centre of pressure of R/4 the rear of the face lifts off (the
+/// pressure stays linear where it is positive); the cylinder tips only when no
+/// pressure on the face balances the moment, an outcome of
+/// tilted_cylinder_friction, not an error.
 
 #ifndef SPINSLIDE_CYLINDER_HPP
 #define SPINSLIDE_CYLINDER_HPP
@@ -216,13 +220,13 @@ enum class cylinder_contact { full, partial, tipped };
 
 /// Friction on a cylinder (radius R, centre of mass at height h, uniform
 /// face) sliding along e_v and spinning with sign s = ±1, per unit μN:
-/// along the velocity (`along`, ≤ 0), sideways along v × ω (`sideways`), and
+/// along the velocity (`along`), sideways along v × ω (`sideways`), and
 /// the torque about the normal per μNR (`torque`, opposing the spin); the
 /// centre of pressure (x forward, y' to the left of the motion for s = +1,
 /// per R) and the contact.  When `contact` is `tipped` every number is NaN.
 template <class Real>
 struct cylinder_friction {
-  Real along;                ///< force along the velocity, per μN (≤ 0)
+  Real along;                ///< force along the velocity, per μN
   Real sideways;             ///< force along v × ω, per μN
   Real torque;               ///< torque about the normal, per μNR, opposing the spin
   Real centre_forward;       ///< centre of pressure along the velocity, per R
