@@ -24,10 +24,22 @@
 // The cut u_c = ln 1e-45 (1e-22 for ε₀ = 0, where the tail's relative error
 // is O(ε_c²) and the closed forms lose digits at small ε) makes the tail's
 // relative error O(δ_c); f is evaluated in 100 digits so that its rounding
-// near the zero, 1e-100/δ relative, stays far below the 35 digits kept.  The
-// u-range is split where ε crosses a point where 𝓕, 𝓣 are not analytic
-// (ε = 1, and the core's rim for the two-attractor load).  The inner integral
-// for an outer node starts at the nearest node already computed (memoized).
+// near the zero, 1e-100/δ relative, stays far below the 35 digits kept.
+//
+// Quadrature: the u-range is split where ε crosses a point where 𝓕, 𝓣 are not
+// analytic (ε = 1; and 1/8, the core's rim, for the two-attractor load), and
+// cut into Gauss–Legendre panels of width ≤ 1, walked from u_i down.  On each
+// panel φ and 𝓣 are sampled at the n nodes; x at the nodes is x at the
+// panel's top plus the exact integral of the degree n−1 interpolant of φ (the
+// inner quadrature, a spectral integration matrix), x at its bottom the
+// Gauss–Legendre sum of φ; the outer sums use the same nodes.  A panel whose
+// interpolants of φ or 𝓣 have their last two Legendre coefficients above a
+// tolerance (relative to the largest) is bisected, down to a narrowest width
+// (only next to a break, where the singular part of 𝓕, 𝓣 — (ε − 1) ln|ε − 1|
+// for the ring, |ε − 1|^(3/2) for Boussinesq, weaker for the others — is
+// negligible on so short a panel).  With a narrowest width of 1e-10 instead of
+// 1e-40 the two routes differed by up to 3e-29 (the ring) and 3e-35
+// (Boussinesq) on throws starting at or next to ε = 1.
 //
 // 𝓕, 𝓣 are the closed forms of docs/theory.md, evaluated here from scratch:
 // uniform disk §2 (the paper's forms with the corrected torque for ε > 1,
@@ -36,10 +48,12 @@
 // (R3)) and 1/4 as a uniform disk of radius 1/8 at the centre, whose flow has
 // a repelling zero ε₁, an attractor ε₂ and an attracting ε = 0.
 //
-// Two routes: A (the table) uses tanh_sinh for both quadratures; B uses
-// adaptive 61-point Gauss–Kronrod for both and cuts at δ_c = 1e-40 (1e-20).
+// Two routes: A (the table): n = 40, coefficient tolerance 1e-40, narrowest
+// panel 1e-40, δ_c = 1e-45 (1e-22 for ε₀ = 0); B: n = 30, panels ≤ 1/2,
+// tolerance 1e-38, narrowest 1e-36, δ_c = 1e-40 (1e-20).
 //   generate_throw_reference             > tests/reference/throw_reference.csv
-//   generate_throw_reference --validate  synthetic flows with exact answers
+//   generate_throw_reference --validate  synthetic flows with exact answers, and
+//                                        the closed forms against the 𝓕, 𝓣 tables
 //   generate_throw_reference --compare FILE [STRIDE]
 //                                        route B on every STRIDE-th row of FILE
 // Progress on stderr.
@@ -56,6 +70,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <exception>
 #include <iterator>
 #include <limits>
@@ -123,15 +138,25 @@ ft ring_and_core(const big& e) {
   return {(3 * r.force + d.force) / 4, (3 * r.torque + a * d.torque) / 4};
 }
 
-// The synthetic flows of --validate: 𝓣 = T constant and f = ε − γ𝓕/T prescribed,
-// so 𝓕 = (T/γ)(ε − f).  t* = γω0/T and θ* = γω0²/(2T) exactly; s* exactly for
-// the linear flows.
-const big synthetic_torque = big(7) / 10;
+// The synthetic flows of --validate: f = ε − γ𝓕/𝓣 prescribed, so 𝓕 = (𝓣/γ)(ε − f),
+// and 𝓣 = T constant: t* = γω0/T and θ* = γω0²/(2T) exactly, s* exactly for the
+// linear flows; or 𝓣 = T + T₁(ε − ε₀) with f linear (linear_torque): t*, s*, θ*
+// as series (validate()), a check of the tail's 𝓣 = 𝓣(ε₀).
+const big synthetic_torque = big(7) / 10, torque_slope = big(1) / 10;
 const big linear_zero = big(4) / 5, linear_rate = big(13) / 10, quadratic_b = big(1) / 2;
 
 long evaluations = 0;  // of f, for the progress report
 
-enum class load { disk, hertz, boussinesq, ring_and_core, linear, quadratic, spin_linear };
+enum class load {
+  disk,
+  hertz,
+  boussinesq,
+  ring_and_core,
+  linear,
+  linear_torque,
+  quadratic,
+  spin_linear
+};
 
 struct flow {
   load kind;
@@ -150,12 +175,15 @@ struct flow {
       default:
         break;
     }
-    return {synthetic_torque * (e - synthetic_rate(e)) / gamma, synthetic_torque};
+    const big torque = kind == load::linear_torque
+                           ? big(synthetic_torque + torque_slope * (e - linear_zero))
+                           : synthetic_torque;
+    return {torque * (e - synthetic_rate(e)) / gamma, torque};
   }
   // The prescribed f of the synthetic flows.
   [[nodiscard]] big synthetic_rate(const big& e) const {
     const big d = e - linear_zero;
-    if (kind == load::linear) return -linear_rate * d;
+    if (kind == load::linear || kind == load::linear_torque) return -linear_rate * d;
     if (kind == load::quadratic) return -linear_rate * d + quadratic_b * d * d;
     return -e / 2;  // spin_linear: ε → 0 with κ = 1/2
   }
@@ -182,7 +210,7 @@ big attractor(const flow& fl, const big& ei) {
   const big factor("1.0625");
   big a = ei, fa = fi;
   for (int i = 0; i < 4000; ++i) {
-    const big b = down ? big(a / factor) : big(a * factor);
+    big b = down ? big(a / factor) : big(a * factor);
     if (down && b < big("1e-30")) return 0;
     if (!down && b > big("1e30")) throw std::runtime_error("the flow runs to pure sliding");
     const big fb = fl.rate(b);
@@ -263,8 +291,8 @@ struct route {
   big narrowest;      // panels are not bisected below this width
   big cut, cut_zero;  // δ_c for ε₀ > 0 and for ε₀ = 0
 };
-const route route_a{40, big(1), big("1e-40"), big("1e-10"), big("1e-45"), big("1e-22")};
-const route route_b{30, big(1) / 2, big("1e-38"), big("1e-11"), big("1e-40"), big("1e-20")};
+const route route_a{40, big(1), big("1e-40"), big("1e-40"), big("1e-45"), big("1e-22")};
+const route route_b{30, big(1) / 2, big("1e-38"), big("1e-36"), big("1e-40"), big("1e-20")};
 
 const legendre_rule& rule(int n) {
   static const legendre_rule a(route_a.points), b(route_b.points);
@@ -323,7 +351,7 @@ class throw_integral {
   // A panel whose φ or 𝓣 is not resolved (the last two Legendre coefficients
   // of the interpolant above the route's tolerance times the largest) is
   // bisected, down to the route's narrowest width (only next to a break, where
-  // the singular part, (u − u_b)² ln|u − u_b| or |u − u_b|^(3/2), is then negligible).
+  // the singular part is then negligible).
   big panel(const big& a, const big& b, const big& xb) {
     const legendre_rule& q = rule(r_.points);
     const std::size_t n = q.node.size();
@@ -462,11 +490,11 @@ int generate() {
   const std::vector<throw_spec> throws = table_throws();
   std::printf(
       "# spinslide reference: stop time, distance and angle of throws in the paper's\n"
-      "# dimensionless units, by nested quadrature in eps = v/omega (tanh_sinh, "
-      "cpp_bin_float_100;\n"
-      "# outer tolerance 1e-44, inner 1e-52, tail cut at |eps - eps0| = 1e-45 eps0).\n"
-      "# generated by tests/reference/generate_throw_reference.cpp; 40 digits printed, 35+ "
-      "correct\n"
+      "# dimensionless units, by nested quadrature in u = ln|eps - eps0|\n"
+      "# (Gauss-Legendre panels of 40 points, cpp_bin_float_100; tail cut at\n"
+      "# |eps - eps0| = 1e-45 eps0, or 1e-22 for eps0 = 0).\n"
+      "# generated by tests/reference/generate_throw_reference.cpp; 40 digits printed,\n"
+      "# 35+ correct\n"
       "# (see docs/accuracy.md).  ring_and_core: 3/4 of the load on the rim, 1/4 a uniform disk\n"
       "# of radius 1/8 at the centre.\n"
       "# columns: profile, gamma, v0, omega0 (exact, hex), eps_initial (v0/omega0, decimal),\n"
@@ -479,7 +507,8 @@ int generate() {
                  evaluations, seconds_since(t0));
     evaluations = 0;
   }
-  std::printf("# %zu throws in %.0f s (one core)\n", throws.size(), seconds_since(t0));
+  std::printf("# %zu throws in %.0f s of CPU time (one core)\n", throws.size(),
+              static_cast<double>(std::clock()) / CLOCKS_PER_SEC);
   return 0;
 }
 
@@ -538,6 +567,21 @@ int validate() {
       check("  distance", lin.distance,
             gamma / T * (linear_zero / 2 + (ei - linear_zero) / (linear_rate + 2)));
       check("  eps_final", lin.end, linear_zero);
+    }
+    for (const char* start : {"0.05", "3"}) {
+      // 1/𝓣 = Σ (−q)^n e^{−nλx}/T with q = T₁(ε_i − ε₀)/T, integrated term by term.
+      const big ei(start), delta = ei - linear_zero, q = -torque_slope * delta / T;
+      big t = 0, s = 0, th = 0, term = 1;
+      for (int n = 0; abs(term) > big("1e-110"); ++n, term *= q) {
+        t += term / (1 + n * linear_rate);
+        th += term / (2 + n * linear_rate);
+        s += term * (linear_zero / (2 + n * linear_rate) + delta / (2 + (n + 1) * linear_rate));
+      }
+      const result v = unit_throw(flow{load::linear_torque, gamma}, *r, ei);
+      std::printf(" linear flow, torque 7/10 + (eps - 4/5)/10, eps_i = %s:\n", start);
+      check("  time", v.time, gamma * t / T);
+      check("  angle", v.angle, gamma * th / T);
+      check("  distance", v.distance, gamma * s / T);
     }
     for (const char* start : {"0.05", "3", "0.81"}) {
       const big ei(start);
