@@ -245,8 +245,8 @@ struct legendre_rule {
   std::vector<std::vector<big>> upper;  // M
   std::vector<std::vector<big>> basis;  // P_k(τ_l)
 
-  explicit legendre_rule(int n) : node(n), weight(n), upper(n, std::vector<big>(n)) {
-    for (int j = 0; j < n; ++j) {
+  explicit legendre_rule(std::size_t n) : node(n), weight(n), upper(n, std::vector<big>(n)) {
+    for (std::size_t j = 0; j < n; ++j) {
       big t = cos(pi() * (j + big(3) / 4) / (n + big(1) / 2));
       for (int it = 0; it < 100; ++it) {
         const auto p = legendre(n, t);
@@ -258,43 +258,45 @@ struct legendre_rule {
       node[j] = t;
       weight[j] = 2 / ((1 - t * t) * p.second * p.second);
     }
-    for (int j = 0; j < n; ++j) basis.push_back(values(n, node[j]));
-    for (int j = 0; j < n; ++j) {
+    for (std::size_t j = 0; j < n; ++j) basis.push_back(values(n, node[j]));
+    for (std::size_t j = 0; j < n; ++j) {
       std::vector<big> P = values(n + 1, node[j]);  // P_0 … P_n at τ_j
-      for (int l = 0; l < n; ++l) {
+      for (std::size_t l = 0; l < n; ++l) {
         std::vector<big> Q = values(n, node[l]);
         big m = (1 - node[j]) * Q[0] / 2;
-        for (int k = 1; k < n; ++k) m += Q[k] * (P[k - 1] - P[k + 1]) / 2;  // (2k+1)/2 · (…)/(2k+1)
+        for (std::size_t k = 1; k < n; ++k)
+          m += Q[k] * (P[k - 1] - P[k + 1]) / 2;  // (2k+1)/2 · (…)/(2k+1)
         upper[j][l] = weight[l] * m;
       }
     }
   }
   // P_0 … P_n at t.
-  static std::vector<big> values(int n, const big& t) {
+  static std::vector<big> values(std::size_t n, const big& t) {
     std::vector<big> P(n + 1);
     P[0] = 1;
     if (n > 0) P[1] = t;
-    for (int k = 1; k < n; ++k) P[k + 1] = ((2 * k + 1) * t * P[k] - k * P[k - 1]) / (k + 1);
+    for (std::size_t k = 1; k < n; ++k)
+      P[k + 1] = ((2 * k + 1) * t * P[k] - k * P[k - 1]) / (k + 1);
     return P;
   }
   // P_n(t) and P_n′(t).
-  static std::pair<big, big> legendre(int n, const big& t) {
+  static std::pair<big, big> legendre(std::size_t n, const big& t) {
     const std::vector<big> P = values(n, t);
     return {P[n], n * (t * P[n] - P[n - 1]) / (t * t - 1)};
   }
 };
 
 struct route {
-  int points;         // Gauss–Legendre points per panel
-  big width;          // the largest panel in u
-  big tolerance;      // of the panels' last Legendre coefficients, relative
-  big narrowest;      // panels are not bisected below this width
-  big cut, cut_zero;  // δ_c for ε₀ > 0 and for ε₀ = 0
+  std::size_t points;  // Gauss–Legendre points per panel
+  big width;           // the largest panel in u
+  big tolerance;       // of the panels' last Legendre coefficients, relative
+  big narrowest;       // panels are not bisected below this width
+  big cut, cut_zero;   // δ_c for ε₀ > 0 and for ε₀ = 0
 };
 const route route_a{40, big(1), big("1e-40"), big("1e-40"), big("1e-45"), big("1e-22")};
 const route route_b{30, big(1) / 2, big("1e-38"), big("1e-36"), big("1e-40"), big("1e-20")};
 
-const legendre_rule& rule(int n) {
+const legendre_rule& rule(std::size_t n) {
   static const legendre_rule a(route_a.points), b(route_b.points);
   return n == route_a.points ? a : b;
 }
@@ -386,14 +388,14 @@ class throw_integral {
   // Whether the interpolant's two highest Legendre coefficients are below the
   // tolerance times the largest.
   [[nodiscard]] bool resolved(const legendre_rule& q, const std::vector<big>& y) const {
-    const int n = static_cast<int>(q.node.size());
+    const std::size_t n = q.node.size();
     big largest = 0, last = 0;
-    for (int k = 0; k < n; ++k) {
+    for (std::size_t k = 0; k < n; ++k) {
       big c = 0;
-      for (int l = 0; l < n; ++l) c += q.weight[l] * y[l] * q.basis[l][k];
+      for (std::size_t l = 0; l < n; ++l) c += q.weight[l] * y[l] * q.basis[l][k];
       c = abs(c * (2 * k + 1) / 2);
       if (c > largest) largest = c;
-      if (k >= n - 2 && c > last) last = c;
+      if (k + 2 >= n && c > last) last = c;
     }
     return last <= r_.tolerance * largest;
   }
