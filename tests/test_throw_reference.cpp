@@ -156,7 +156,7 @@ void expect_within(const measured& m, double bound) {
   EXPECT_LE(w.ratio, 1e-14);  // terminal_motion, a root in the evaluation type
 }
 
-TEST(ThrowReference, TableIsWhatTheGeneratorWrites) {
+TEST(ThrowReference, TableReachesBothAttractors) {
   const auto& rows = throw_reference();
   std::size_t spinning = 0;
   for (const throw_row& row : rows) {
