@@ -214,7 +214,8 @@ int main(int argc, char** argv) {
     std::printf(
         "cd_sweep: seeds %u-%u, %d throws each; fits over %d frames, evaluated at frame "
         "%d; tracking noise x %g; window correction %s\n",
-        opt.first, opt.first + opt.seeds - 1, opt.throws, opt.analysis.fit_frames,
+        opt.first, opt.first + static_cast<unsigned>(opt.seeds) - 1, opt.throws,
+        opt.analysis.fit_frames,
         opt.analysis.evaluate_at < 0 ? opt.analysis.fit_frames / 2 : opt.analysis.evaluate_at,
         opt.noise_scale, opt.analysis.window_correction ? "on" : "off");
     std::vector<seed_result> results(static_cast<std::size_t>(opt.seeds));

@@ -33,6 +33,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -137,11 +138,11 @@ std::pair<double, double> limits(const load_case& c, double gamma) {
 }
 
 int run_case(const load_case& c, double gamma) {
-  const int n = 20000;
+  const std::size_t n = 20000;
   const double lo = 1e-4, hi = 1e3;
   std::vector<double> eps(n), g(n);
-  for (int i = 0; i < n; ++i) {
-    eps[i] = lo * std::pow(hi / lo, double(i) / (n - 1));
+  for (std::size_t i = 0; i < n; ++i) {
+    eps[i] = lo * std::pow(hi / lo, double(i) / double(n - 1));
     g[i] = flow_g<double>(c, gamma, eps[i]);
   }
   const auto lim = limits(c, gamma);
@@ -151,13 +152,13 @@ int run_case(const load_case& c, double gamma) {
     ++failures;
   }
   double smallest = std::numeric_limits<double>::infinity();
-  for (int i = 1; i + 1 < n; ++i)
+  for (std::size_t i = 1; i + 1 < n; ++i)
     if ((g[i - 1] > 0) == (g[i] > 0) && (g[i] > 0) == (g[i + 1] > 0))
       smallest = std::fmin(smallest, std::fabs(g[i]));
   std::cerr << c.name << " gamma " << gamma << ": g(0) = " << lim.first
             << ", g(inf) = " << lim.second << ", smallest |g| away from sign changes " << smallest
             << "\n";
-  for (int i = 0; i + 1 < n; ++i) {
+  for (std::size_t i = 0; i + 1 < n; ++i) {
     if ((g[i] > 0) == (g[i + 1] > 0)) continue;
     const big gm = big(gamma);
     auto f = [&](const big& e) { return flow_g<big>(c, gm, e); };
