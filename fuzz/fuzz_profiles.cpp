@@ -148,7 +148,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 5: {
       const double a = in.unit<double>();
       describe("a", a);
-      const validity v = valid_if(a >= std::numeric_limits<double>::min() && a <= 1);
+      const validity v = valid_if(a > 0 && a <= 1 && a * a >= std::numeric_limits<double>::min());
       if (in.byte() % 2)
         build(v, "scaled(hertz)", in, [a] { return scaled<hertz<double>>(hertz<double>(), a); });
       else

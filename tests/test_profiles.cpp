@@ -391,6 +391,22 @@ TEST(Annulus, RegressionForceRoundedAboveOneAtLargeRatios) {
   }
 }
 
+// Found by fuzz_profiles (CI run, sanitize preset): scaled(hertz) at radius
+// a = 2.7e-162 gave ⟨r²⟩ = a²⟨r²⟩_P = 0 (a² underflowed), so ⟨r⟩² > ⟨r²⟩.
+// Guards the shrink radius's domain [√min_value, 1]: at its lower end the
+// moments keep their relative accuracy (exact powers of two times ⟨r^k⟩_P).
+TEST(Scaled, RegressionRadiusWhoseSquareUnderflowsIsADomainError) {
+  EXPECT_THROW((scaled<hertz<double>>(hertz<double>(), 2.66952910647346144157e-162)),
+               std::domain_error);
+  const double a = std::sqrt(std::numeric_limits<double>::min());  // 2^-511, exact
+  const hertz<double> h;
+  const scaled<hertz<double>> s(h, a);
+  EXPECT_EQ(s.mean_radius(), std::ldexp(h.mean_radius(), -511));
+  EXPECT_EQ(s.mean_square_radius(), std::ldexp(h.mean_square_radius(), -1022));
+  EXPECT_EQ(s.mean_inverse_radius(), std::ldexp(h.mean_inverse_radius(), 511));
+  EXPECT_LE(s.mean_radius() * s.mean_radius(), s.mean_square_radius());
+}
+
 // ---------------------------------------------------------------- coupling curve
 
 // 𝓕(ratio_from_force(F)) = F to `ulps` over the whole range of 𝓕.

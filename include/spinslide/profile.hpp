@@ -208,8 +208,8 @@ class scaled : public profile_base<scaled<Profile>, typename Profile::value_type
   using Policy = typename Profile::policy_type;
 
  public:
-  /// `p` shrunk to radius a = `radius` ∈ (0, 1] (a normal number); otherwise
-  /// std::domain_error.
+  /// `p` shrunk to radius a = `radius` ∈ [√min_value, 1] (a² a normal number,
+  /// so that a²⟨r²⟩ does not underflow); otherwise std::domain_error.
   scaled(Profile p, Real radius)
       : p_(std::move(p)),
         a_(detail::checked_constructor_argument<Policy>(

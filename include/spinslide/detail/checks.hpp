@@ -41,7 +41,7 @@ enum class argument_rule {
   finite_positive,      ///< 0 < x < ∞ (lengths, gravity, γ for the flow and the systems)
   normal_positive,      ///< min_value ≤ x ≤ max_value (model parameters that are divided by)
   inner_ratio,          ///< 0 ≤ x < 1 (an inner radius in units of the contact radius)
-  shrink_radius,        ///< min_value ≤ x ≤ 1 (a radius a profile is shrunk to)
+  shrink_radius,        ///< min_value ≤ x² and x ≤ 1 (a radius a profile is shrunk to)
   throw_inertia_ratio,  ///< min_value ≤ γ ≤ max_value·epsilon (a throw integrated to its stop)
   contact_half_angle    ///< 0 < x ≤ π (the half-angle of a contact segment of the unit disk)
 };
@@ -66,7 +66,7 @@ bool satisfies(T x, argument_rule rule) {
     case argument_rule::inner_ratio:
       return x >= 0 && x < 1;
     case argument_rule::shrink_radius:
-      return x >= min_value<T>() && x <= 1;
+      return x > 0 && x <= 1 && x * x >= min_value<T>();
     case argument_rule::throw_inertia_ratio:
       return x >= min_value<T>() && x <= max_value<T>() * epsilon<T>();
     case argument_rule::contact_half_angle:
@@ -90,7 +90,9 @@ inline const char* requirement(argument_rule rule) {
     case argument_rule::inner_ratio:
       return "in [0, 1)";
     case argument_rule::shrink_radius:
-      return "in [min_value, 1]";
+      // a²⟨r²⟩ must not underflow (found by fuzz_profiles).
+      return "in [sqrt(min_value), 1] (1.5e-154 to 1 for double): below it the mean square "
+             "radius a^2<r^2> of the shrunk profile underflows";
     case argument_rule::throw_inertia_ratio:
       // Why the throws narrow γ's domain (found by fuzz_stop_time).
       return "in [min_value, max_value*epsilon] (2.2e-308 to 4.0e292 for double): above it the "
