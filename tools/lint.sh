@@ -26,13 +26,9 @@
 # Any finding or unformatted file fails the step (exit 1); the summary at the
 # end lists every distinct finding once and every failed file.
 #
-# Expected suppression: one, and only one, NOLINT is expected in the tree:
-# spinslide::detail::integrate_stop in include/spinslide/dynamics.hpp
-# (cognitive complexity 161) may carry
-#     // NOLINT(readability-function-cognitive-complexity)
-# on the line of its name, because the dynamics issue (issue 16) rewrites it.
-# Every other finding is to be fixed, not suppressed (or, for a check that is
-# wrong by design for this code, disabled in .clang-tidy with the reason).
+# Expected suppressions: none.  Every finding is to be fixed, not
+# suppressed (or, for a check that is wrong by design for this code,
+# disabled in .clang-tidy with the reason).
 # The step prints the NOLINT comments it finds, so that new ones are seen.
 #
 # Needs: cmake, clang++, clang-tidy, clang-format (Debian 12: apt-get install
@@ -154,7 +150,7 @@ nfindings=$(wc -l <"$out/findings.txt")
 
 echo
 echo "==================== lint summary ($((SECONDS - start)) s)"
-echo "NOLINT comments in the tree (one expected: integrate_stop, until issue 16):"
+echo "NOLINT comments in the tree (none expected):"
 grep -n 'NOLINT' -- "${sources[@]}" | sed 's/^/  /' || echo "  none"
 status=0
 if [ "${#unformatted[@]}" -gt 0 ]; then
