@@ -179,4 +179,12 @@ TEST(ThrowReference, LongDoubleWithin1e12) {
   expect_within(w, 1e-12);
 }
 
+// The integration runs in double whatever the profile's type
+// (docs/theory.md §9); a cpp_bin_float_50 profile gives double accuracy.
+TEST(ThrowReference, MultiprecisionWithin1e12) {
+  const measured w = measure<big>();
+  report("cpp_bin_float_50", w);
+  expect_within(w, 1e-12);
+}
+
 }  // namespace

@@ -485,7 +485,7 @@ class stop_integrator {
     err = (std::max)(err, sum_error(pn.e2, at_.plain2 + rest_2));
     const double rest_rho = rest_at_rate();
     err = (std::max)(err, sum_error(pn.e2_rho, at_.rho2 + rest_rho));
-    return err == err ? err : inf;
+    return std::isnan(err) ? std::numeric_limits<double>::infinity() : err;
   }
 
   // Whether the rounding of F, amplified in 1/F, would decide a panel in s:
