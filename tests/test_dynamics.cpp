@@ -569,14 +569,19 @@ TEST(SimulateThrow, ReportsTheAttractorItsIntegrationReaches) {
 // results (which test_throw_reference holds to 1e-12 against 100-digit
 // quadrature) to their own or double's precision.
 TEST(SimulateThrow, EveryRealTypeGivesTheDoubleResult) {
+  using big = boost::multiprecision::cpp_bin_float_50;
   for (const double ei : {0.01, 0.7, 3.0, 100.0}) {
     const auto d = simulate_throw(uniform_disk<double>(), 0.5, ei, 1.0);
     const auto f = simulate_throw(uniform_disk<float>(), 0.5f, static_cast<float>(ei), 1.0f);
     const auto l =
         simulate_throw(uniform_disk<long double>(), 0.5L, static_cast<long double>(ei), 1.0L);
+    const auto b = simulate_throw(uniform_disk<big>(), big(0.5), big(ei), big(1));
     EXPECT_NEAR(double(f.time) / d.time, 1, 1e-5) << ei;
     EXPECT_NEAR(double(f.distance) / d.distance, 1, 1e-5) << ei;
     EXPECT_NEAR(double(l.time) / d.time, 1, 1e-13) << ei;
     EXPECT_NEAR(double(l.angle) / d.angle, 1, 1e-13) << ei;
+    EXPECT_NEAR(static_cast<double>(b.time) / d.time, 1, 1e-13) << ei;
+    EXPECT_NEAR(static_cast<double>(b.distance) / d.distance, 1, 1e-13) << ei;
+    EXPECT_NEAR(static_cast<double>(b.angle) / d.angle, 1, 1e-13) << ei;
   }
 }
