@@ -11,6 +11,14 @@
 //     in closed form, as in tests/reference/generate_disk_reference.cpp);
 //   - a degree-8/8 rational for each of 𝓕 and 𝓣: a speed bound, not a
 //     method (its accuracy is printed; it cannot follow the ε = 1 singularity).
+// And the projection onto the limit set (limit_set.hpp) of the uniform disk,
+// Hertz and a tabulated profile (the CD annulus, b = 1/8), against that
+// profile's force_torque at the same ratios:
+//   - sliding: P = C(ε) + 0.2 (ε, 1) (w = 1), which projects to C(ε); "warm"
+//     starts from ε(1 + 1e-3) (a contact whose ratio moved 0.1 % since the
+//     last step), "cold" from no guess;
+//   - sticking: P = θ C(ε), θ uniform in [0.5, 0.99] (inside L, most of them
+//     outside the triangle that decides without an evaluation), warm.
 // "scalar" benchmarks hand each result to benchmark::DoNotOptimize, which
 // keeps the loop scalar; "array" benchmarks write output arrays in a plain
 // loop, which the compiler may vectorize.
@@ -19,6 +27,8 @@
 
 #include <spinslide/contact.hpp>
 #include <spinslide/disk.hpp>
+#include <spinslide/limit_set.hpp>
+#include <spinslide/profile.hpp>
 #include <spinslide/tabulated.hpp>
 
 #include <boost/math/constants/constants.hpp>
@@ -33,6 +43,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -273,6 +284,95 @@ void tabulated_disk_force_torque(benchmark::State& s) {
   scalar<double>(s, [](double e) { return tab.force_torque(e); });
 }
 
+// The projection's profiles: the uniform disk, Hertz, and a tabulated CD annulus.
+template <class P>
+const P& projected() {
+  static const P p;
+  return p;
+}
+using tabulated_cd = spinslide::tabulated_profile<>;
+template <>
+const tabulated_cd& projected<tabulated_cd>() {
+  static const tabulated_cd p{spinslide::annulus<>(0.125)};
+  return p;
+}
+
+struct projection_case {
+  double force, torque, start;
+};
+template <class P>
+const std::vector<projection_case>& projection_cases(bool sliding) {
+  static const auto make = [](bool slide) {
+    std::mt19937_64 rng(43);
+    std::uniform_real_distribution<double> theta(0.5, 0.99);
+    std::vector<projection_case> v;
+    for (double e : inputs<double>()) {
+      const auto c = projected<P>().force_torque(e);
+      const double q = theta(rng);
+      v.push_back(slide ? projection_case{c.force + 0.2 * e, c.torque + 0.2, e * (1 + 1e-3)}
+                        : projection_case{q * c.force, q * c.torque, e});
+    }
+    return v;
+  };
+  static const std::vector<projection_case> slide = make(true), stick = make(false);
+  return sliding ? slide : stick;
+}
+
+template <class P>
+void profile_force_torque(benchmark::State& s) {
+  scalar<double>(s, [](double e) { return projected<P>().force_torque(e); });
+}
+// The same evaluations as a dependent chain (each ε waits for the previous
+// result, as a projection's iterations do): the latency of one evaluation,
+// where the loop above measures the throughput of independent ones.
+template <class P>
+void profile_force_torque_chained(benchmark::State& s) {
+  const auto& xs = inputs<double>();
+  for (auto _ : s) {
+    double carry = 0;
+    for (const double e : xs) {
+      const auto r = projected<P>().force_torque(e + carry);
+      carry = r.force * 1e-300;  // ≈ 0, but the compiler cannot know
+    }
+    benchmark::DoNotOptimize(carry);
+  }
+  s.SetItemsProcessed(s.iterations() * static_cast<int64_t>(xs.size()));
+}
+template <class P>
+void projection(benchmark::State& s, bool sliding, bool warm) {
+  const auto& cases = projection_cases<P>(sliding);
+  for (auto _ : s) {
+    for (const auto& c : cases) {
+      const auto r =
+          spinslide::project_to_limit_set(projected<P>(), c.force, c.torque, 1.0,
+                                          spinslide::starting_ratio<double>{warm ? c.start : 0.0});
+      benchmark::DoNotOptimize(r);
+    }
+  }
+  s.SetItemsProcessed(s.iterations() * static_cast<int64_t>(cases.size()));
+}
+template <class P>
+void projection_sliding_warm(benchmark::State& s) {
+  projection<P>(s, true, true);
+}
+template <class P>
+void projection_sliding_cold(benchmark::State& s) {
+  projection<P>(s, true, false);
+}
+template <class P>
+void projection_sticking_warm(benchmark::State& s) {
+  projection<P>(s, false, true);
+}
+#define SPINSLIDE_BENCH_PROJECTION(P)                  \
+  BENCHMARK_TEMPLATE(profile_force_torque, P);         \
+  BENCHMARK_TEMPLATE(profile_force_torque_chained, P); \
+  BENCHMARK_TEMPLATE(projection_sliding_warm, P);      \
+  BENCHMARK_TEMPLATE(projection_sliding_cold, P);      \
+  BENCHMARK_TEMPLATE(projection_sticking_warm, P);
+SPINSLIDE_BENCH_PROJECTION(spinslide::uniform_disk<>)
+SPINSLIDE_BENCH_PROJECTION(spinslide::hertz<>)
+SPINSLIDE_BENCH_PROJECTION(tabulated_cd)
+
 BENCHMARK(literal_boost_default_policy);
 BENCHMARK(literal_boost_no_promotion);
 BENCHMARK(agm_closed_form);
@@ -330,6 +430,15 @@ int main(int argc, char** argv) {
        {"spinslide_batch_float", "rational_8_8_array"},
        {"contact_law_uniform_disk", "spinslide_force_torque_double"},
        {"contact_law_tabulated_disk", "tabulated_disk_force_torque"}});
+  for (const char* p : {"spinslide::uniform_disk<>", "spinslide::hertz<>", "tabulated_cd"}) {
+    const std::string base = std::string("profile_force_torque<") + p + ">";
+    const std::string chained = std::string("profile_force_torque_chained<") + p + ">";
+    for (const char* kind :
+         {"projection_sliding_warm", "projection_sliding_cold", "projection_sticking_warm"}) {
+      reporter.add_comparison(std::string(kind) + "<" + p + ">", base);
+      reporter.add_comparison(std::string(kind) + "<" + p + ">", chained);
+    }
+  }
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   return 0;

@@ -24,6 +24,11 @@ class ratio_reporter : public benchmark::ConsoleReporter {
                           std::vector<std::pair<std::string, std::string>> comparisons = {})
       : baseline_(std::move(baseline)), comparisons_(std::move(comparisons)) {}
 
+  /// Also print "first costs N times second".
+  void add_comparison(std::string first, std::string second) {
+    comparisons_.emplace_back(std::move(first), std::move(second));
+  }
+
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
     for (const Run& r : runs) {

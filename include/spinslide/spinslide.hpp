@@ -16,6 +16,7 @@
 #include <spinslide/disk.hpp>
 #include <spinslide/dynamics.hpp>
 #include <spinslide/equations_of_motion.hpp>
+#include <spinslide/limit_set.hpp>
 #include <spinslide/profile.hpp>
 #include <spinslide/profile_base.hpp>
 #include <spinslide/profile_concept.hpp>

@@ -1,0 +1,245 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+// The projection of a point (x, y) onto a profile's limit set L in the
+// metric (f − x)² + w (t − y)² (limit_set.hpp; docs/theory.md §11).
+//
+// The nearest point of the curve C(ε) = (𝓕(ε), 𝓣(ε)) satisfies
+//   h(ε) = (x − 𝓕) − wε(y − 𝓣) = 0,
+// because the curve's normal at ε is (ε, 1) (𝓣′ = −ε𝓕′).  For x, y > 0,
+// h(0) = x > 0 and h(∞) = −∞, and h changes sign once where P lies outside L
+// (§11), so the root is bracketed.  It is found by Newton's method in ε,
+// safeguarded by the bracket (bisection in ln ε, or a growing factor towards
+// an open side), with 𝓕′ in closed form where the profile has one
+// (force_slope.hpp: Hertz, Boussinesq), and otherwise from the secant of 𝓕
+// through the last two samples (a difference quotient for the first).
+//
+// Sticking is decided on the way, without a root: L contains the
+// quadrilateral (0, 0), (1, 0), C(ε), (0, ⟨r⟩) for every sample C(ε)
+// (convexity), so a point inside it sticks; that quadrilateral also contains
+// the rectangle [0, 𝓕] × [0, 𝓣] and so the inward normal of C(ε): a root on
+// P's inward normal is recognised at the latest when it is reached.
+//
+// Where 𝓕 jumps (the uncoupled caps jump from 0 to 1 at ε = 0⁺), L has a
+// straight edge and the bracket closes on the jump without h reaching 0: the
+// point is then projected onto the chord between the two sides (the edge).
+// The ends ε = 0 and ε = ∞ are the bracket's initial sides, C(0) = (0, ⟨r⟩)
+// and C(∞) = (1, 0); the search goes no further than the smallest and the
+// largest normal number before it projects onto the chord to the end.
+#ifndef SPINSLIDE_DETAIL_LIMIT_PROJECTOR_HPP
+#define SPINSLIDE_DETAIL_LIMIT_PROJECTOR_HPP
+
+#include <spinslide/detail/force_slope.hpp>
+#include <spinslide/disk.hpp>
+
+#include <boost/math/policies/error_handling.hpp>
+#include <boost/math/special_functions/fpclassify.hpp>
+#include <boost/math/tools/precision.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace spinslide {
+
+/// The point of a profile's limit set nearest to a given (force, torque)
+/// (project_to_limit_set, limit_set.hpp).
+template <class Real>
+struct limit_projection {
+  Real force;     ///< f = |F|/(μN) of the nearest point of L
+  Real torque;    ///< t = |T|/(μNa) of the nearest point of L
+  bool sticking;  ///< true if the given point lies in L (then returned unchanged)
+  Real ratio;  ///< the ratio ε of the curve point (NaN if sticking; +∞ at (1, 0), 0 at (0, ⟨r⟩))
+};
+
+namespace detail {
+
+template <class Profile>
+class limit_projector {
+  using Real = typename Profile::value_type;
+  using Policy = typename Profile::policy_type;
+
+ public:
+  // x, y ≥ 0 and w > 0, finite (checked by the caller).
+  limit_projector(const Profile& profile, Real x, Real y, Real w)
+      : profile_(profile), x_(x), y_(y), w_(w), top_(profile.mean_radius()) {}
+
+  // The projection, searching from `start` (a ratio; 0 or ∞: no guess).
+  limit_projection<Real> operator()(Real start, const char* function) {
+    if (x_ + y_ / top_ <= 1) return sticking();  // inside the triangle (0,0), (1,0), (0,⟨r⟩)
+    if (y_ == 0) return on_curve(inf(), {Real(1), Real(0)});  // x > 1: the corner (1, 0)
+    if (x_ == 0) return on_curve(Real(0), {Real(0), top_});  // y > ⟨r⟩: the corner (0, ⟨r⟩)
+    lo_ = {Real(0), {Real(0), top_}, x_};
+    hi_ = {inf(), {Real(1), Real(0)}, -inf()};
+    sample a = evaluate(first_ratio(start));
+    for (int i = 0; i < max_iterations; ++i) {
+      if (inside_quadrilateral(a.ft)) return sticking();
+      if (a.h == 0) return on_curve(a.eps, a.ft);
+      narrow(a);
+      const step next = next_ratio(a);
+      if (next.kind == step_kind::edge) return on_edge();
+      if (next.kind == step_kind::converged)
+        return next.eps == a.eps ? classify(a) : classify(evaluate(next.eps));
+      previous_ = a;
+      a = evaluate(next.eps);
+    }
+    const Real bad = boost::math::policies::raise_evaluation_error<Real>(
+        function, "No projection found after %1% iterations.", Real(max_iterations), Policy());
+    return {bad, bad, false, bad};
+  }
+
+ private:
+  static constexpr int max_iterations = 200;
+  struct sample {
+    Real eps;  // ε (0 and ∞ at the bracket's initial sides)
+    force_torque_result<Real> ft;
+    Real h;  // (x − 𝓕) − wε(y − 𝓣)
+  };
+  enum class step_kind { search, converged, edge };
+  struct step {
+    Real eps;
+    step_kind kind;
+  };
+
+  static Real inf() { return std::numeric_limits<Real>::infinity(); }
+
+  sample evaluate(Real eps) const {
+    const auto ft = profile_.force_torque(eps);
+    return {eps, ft, (x_ - ft.force) - w_ * eps * (y_ - ft.torque)};
+  }
+
+  // A given ratio, or where the root lies if P is far from L (x − 𝓕 ≈ x,
+  // y − 𝓣 ≈ y), kept within three decades of 1.
+  Real first_ratio(Real start) const {
+    if (start > 0 && start < inf()) return start;
+    return (std::min)((std::max)(x_ / (w_ * y_), Real(1e-3)), Real(1e3));
+  }
+
+  // P in the quadrilateral (0, 0), (1, 0), C, (0, ⟨r⟩), counter-clockwise:
+  // on the left of the edges (1, 0) → C and C → (0, ⟨r⟩).
+  bool inside_quadrilateral(const force_torque_result<Real>& c) const {
+    const Real f = c.force, t = c.torque;
+    return t * (1 - x_) >= (1 - f) * y_ && -f * (y_ - t) >= (top_ - t) * (x_ - f);
+  }
+
+  void narrow(const sample& a) {
+    if (a.h > 0)
+      lo_ = a;
+    else
+      hi_ = a;
+  }
+
+  // 𝓕′(ε): closed form, or the secant through the previous sample, or a
+  // forward difference (one more evaluation) for the first.
+  Real force_slope_at(const sample& a) const {
+    if constexpr (has_force_slope<Profile>()) {
+      return force_slope(profile_, a.eps);
+    } else {
+      if (previous_.eps != a.eps && previous_.eps > 0 && previous_.eps < inf())
+        return (a.ft.force - previous_.ft.force) / (a.eps - previous_.eps);
+      const Real e = a.eps * (1 + tolerances().difference);
+      return (profile_.force(e) - a.ft.force) / (e - a.eps);
+    }
+  }
+
+  struct tolerance_set {
+    Real step;        // a relative Newton step below which the next error is rounding
+    Real difference;  // the relative step of the first difference quotient
+  };
+  // √epsilon for Newton's quadratic convergence, epsilon^0.62 for the
+  // secant's order 1.6; computed once per type.
+  static const tolerance_set& tolerances() {
+    using std::pow;
+    using std::sqrt;
+    static const tolerance_set t = {has_force_slope<Profile>()
+                                        ? sqrt(boost::math::tools::epsilon<Real>())
+                                        : pow(boost::math::tools::epsilon<Real>(), Real(0.62)),
+                                    sqrt(boost::math::tools::epsilon<Real>())};
+    return t;
+  }
+
+  // Newton's step in ε (dh/dε = −𝓕′(1 + wε²) − w(y − 𝓣)), kept inside the
+  // bracket; where it leaves it, or has not halved h since the last sample
+  // (far from the root, where h is not near linear), a step that shrinks the
+  // bracket instead.
+  step next_ratio(const sample& a) {
+    using std::fabs;
+    const Real slope = -(force_slope_at(a) * (1 + w_ * a.eps * a.eps) + w_ * (y_ - a.ft.torque));
+    const Real next = a.eps - a.h / slope;
+    const bool slow = previous_.eps > 0 && fabs(a.h) > fabs(previous_.h) / 2;
+    if (slope < 0 && !slow) {
+      // A step this small is taken even if rounding put it on a side of the bracket.
+      if (fabs(next - a.eps) <= tolerances().step * a.eps) return {next, step_kind::converged};
+      if (next > lo_.eps && next < hi_.eps) return {next, step_kind::search};
+    }
+    return shrink();
+  }
+
+  // Bisection in ln ε, or towards an open side by a factor that squares on
+  // each use (8, 64, 4096, …: the normal numbers' range in about ten steps);
+  // where that would leave the normal numbers, or the bracket is as narrow as
+  // rounding allows without a root (a jump of 𝓕), the chord between the
+  // sides is the answer.
+  step shrink() {
+    using boost::math::tools::epsilon;
+    using boost::math::tools::max_value;
+    using boost::math::tools::min_value;
+    using std::sqrt;
+    if (lo_.eps == 0) {
+      const Real next = hi_.eps / reach();
+      return next >= min_value<Real>() ? step{next, step_kind::search}
+                                       : step{Real(0), step_kind::edge};
+    }
+    if (hi_.eps == inf()) {
+      const Real next = lo_.eps * reach();
+      return next <= max_value<Real>() ? step{next, step_kind::search}
+                                       : step{inf(), step_kind::edge};
+    }
+    if (hi_.eps - lo_.eps <= 4 * epsilon<Real>() * hi_.eps) return {hi_.eps, step_kind::edge};
+    return {sqrt(lo_.eps) * sqrt(hi_.eps), step_kind::search};
+  }
+  Real reach() {
+    Real r = reach_;
+    reach_ = r * r;  // +∞ once past the largest value: the next step ends the search
+    return r;
+  }
+
+  limit_projection<Real> classify(const sample& a) const {
+    if (inside_quadrilateral(a.ft)) return sticking();
+    return on_curve(a.eps, a.ft);
+  }
+
+  // The nearest point of the chord between the bracket's sides (an edge of
+  // L where 𝓕 jumps, or the last stretch to an end).
+  limit_projection<Real> on_edge() const {
+    using std::sqrt;
+    const Real df = hi_.ft.force - lo_.ft.force, dt = hi_.ft.torque - lo_.ft.torque;
+    const Real px = x_ - lo_.ft.force, py = y_ - lo_.ft.torque;
+    // P is inside if it lies on the inner side of the chord (to its right,
+    // going from the ε = 0 side to the ε = ∞ side).
+    if (df * py - dt * px < 0) return sticking();
+    const Real norm = df * df + w_ * dt * dt;
+    const Real along = norm > 0 ? (px * df + w_ * py * dt) / norm : Real(0);
+    const Real lambda = (std::min)((std::max)(along, Real(0)), Real(1));
+    const Real ratio = lo_.eps == 0 ? Real(0) : hi_.eps == inf() ? inf() : sqrt(lo_.eps * hi_.eps);
+    return on_curve(ratio, {lo_.ft.force + lambda * df, lo_.ft.torque + lambda * dt});
+  }
+
+  limit_projection<Real> sticking() const {
+    return {x_, y_, true, std::numeric_limits<Real>::quiet_NaN()};
+  }
+  static limit_projection<Real> on_curve(Real ratio, const force_torque_result<Real>& c) {
+    return {c.force, c.torque, false, ratio};
+  }
+
+  const Profile& profile_;
+  Real x_, y_, w_, top_;
+  sample lo_{}, hi_{}, previous_{};
+  Real reach_ = 8;
+};
+
+}  // namespace detail
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_DETAIL_LIMIT_PROJECTOR_HPP

@@ -1,0 +1,375 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//
+// project_to_limit_set against independent computations:
+//  - brute force: the nearest point of the curve by a dense scan of
+//    ε = τ/(1 − τ) over τ ∈ [0, 1] and a golden-section refinement, and
+//    "inside L" by bisection of 𝓕(ε) = f and comparison with 𝓣 there;
+//  - exact constructions: a point P = C(ε) + λ(wε, 1) (λ > 0) projects to
+//    C(ε) at ratio ε (the normal of the curve at ε is (ε, 1));
+//  - exact cases: the corners (1, 0) and (0, ⟨r⟩), the uncoupled caps' box
+//    (a clamp), the boundary and the inside.
+#include <gtest/gtest.h>
+
+#include <spinslide/limit_set.hpp>
+#include <spinslide/spinslide.hpp>
+
+#include <boost/math/policies/policy.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include <cerrno>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace spinslide;
+
+// The profile, with every evaluation counted (a friction profile itself).
+template <class P>
+class counted {
+ public:
+  using value_type = typename P::value_type;
+  using policy_type = typename P::policy_type;
+  explicit counted(P p) : p_(std::move(p)) {}
+  force_torque_result<value_type> force_torque(value_type e) const {
+    ++calls;
+    return p_.force_torque(e);
+  }
+  value_type force(value_type e) const { return force_torque(e).force; }
+  value_type torque(value_type e) const { return force_torque(e).torque; }
+  // 𝓕′ where P has it in closed form (then the projection takes Newton
+  // steps; otherwise secants), counted apart.
+  template <class Q = P>
+  auto force_derivative(value_type e) const
+      -> decltype(std::declval<const Q&>().force_derivative(e)) {
+    ++slopes;
+    return p_.force_derivative(e);
+  }
+  value_type mean_radius() const { return p_.mean_radius(); }
+  value_type mean_inverse_radius() const { return p_.mean_inverse_radius(); }
+  value_type mean_square_radius() const { return p_.mean_square_radius(); }
+  mutable int calls = 0, slopes = 0;
+
+ private:
+  P p_;
+};
+
+// The squared distance in the metric from (x, y) to C(ε), ε = τ/(1 − τ).
+template <class P>
+double squared_distance(const P& p, double tau, double x, double y, double w) {
+  const double eps = tau >= 1 ? std::numeric_limits<double>::infinity() : tau / (1 - tau);
+  const auto c = p.force_torque(eps);
+  return (c.force - x) * (c.force - x) + w * (c.torque - y) * (c.torque - y);
+}
+
+// The smallest squared distance from (x, y) to the curve, by brute force.
+template <class P>
+double brute_force_squared_distance(const P& p, double x, double y, double w) {
+  const int n = 4000;
+  int best = 0;
+  double d_best = squared_distance(p, 0, x, y, w);
+  for (int i = 1; i <= n; ++i) {
+    const double d = squared_distance(p, double(i) / n, x, y, w);
+    if (d < d_best) {
+      d_best = d;
+      best = i;
+    }
+  }
+  double a = std::max(0.0, double(best - 1) / n), b = std::min(1.0, double(best + 1) / n);
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  for (int k = 0; k < 80; ++k) {
+    const double c = b - g * (b - a), d = a + g * (b - a);
+    if (squared_distance(p, c, x, y, w) < squared_distance(p, d, x, y, w))
+      b = d;
+    else
+      a = c;
+  }
+  return std::min(d_best, squared_distance(p, (a + b) / 2, x, y, w));
+}
+
+// How far (x, y) lies above the curve at f = x (negative: below, inside L);
+// +∞ for x > 1.  By bisection of 𝓕 in τ.
+template <class P>
+double height_above_curve(const P& p, double x, double y) {
+  if (x > 1) return std::numeric_limits<double>::infinity();
+  double a = 0, b = 1;
+  for (int k = 0; k < 200 && b - a > 1e-17; ++k) {
+    const double m = (a + b) / 2;
+    (p.force(m / (1 - m)) < x ? a : b) = m;
+  }
+  const double tau = (a + b) / 2;
+  return y - p.torque(tau / (1 - tau));
+}
+
+struct points {
+  std::vector<double> x, y;
+};
+const points& random_points() {
+  static const points pts = [] {
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> u(0, 1);
+    points p;
+    for (int i = 0; i < 300; ++i) {
+      p.x.push_back(1.6 * u(rng));
+      p.y.push_back(1.2 * u(rng));
+    }
+    return p;
+  }();
+  return pts;
+}
+
+void expect_unchanged(const limit_projection<double>& r, double x, double y,
+                      const std::string& where) {
+  EXPECT_EQ(r.force, x) << where;
+  EXPECT_EQ(r.torque, y) << where;
+  EXPECT_TRUE(std::isnan(r.ratio)) << where;
+}
+
+// One point against brute force; returns whether it sticks (or nothing for a
+// point on the curve to rounding, where either answer is right).
+enum class outcome { sticking, sliding, either };
+template <class P>
+outcome expect_point_matches_brute_force(const P& p, double x, double y, double w,
+                                         const std::string& where) {
+  const auto r = project_to_limit_set(p, x, y, w);
+  const double height = height_above_curve(p, x, y);
+  if (std::fabs(height) < 1e-9) return outcome::either;
+  EXPECT_EQ(r.sticking, height < 0) << where;
+  if (r.sticking) {
+    expect_unchanged(r, x, y, where);
+    return outcome::sticking;
+  }
+  const double d2 = (r.force - x) * (r.force - x) + w * (r.torque - y) * (r.torque - y);
+  const double best = brute_force_squared_distance(p, x, y, w);
+  EXPECT_LE(d2, best * (1 + 1e-12) + 1e-30) << where;
+  EXPECT_GE(d2, best * (1 - 1e-9)) << where << " (closer than the curve's nearest point?)";
+  return outcome::sliding;
+}
+
+// Every random point against brute force, for one profile and weight.
+template <class P>
+void expect_matches_brute_force(const P& p, double w, const std::string& name) {
+  const auto& pts = random_points();
+  int sticking = 0, sliding = 0;
+  for (std::size_t i = 0; i < pts.x.size(); ++i) {
+    const std::string where = name + " w=" + std::to_string(w) + " at (" +
+                              std::to_string(pts.x[i]) + ", " + std::to_string(pts.y[i]) + ")";
+    const outcome o = expect_point_matches_brute_force(p, pts.x[i], pts.y[i], w, where);
+    sticking += o == outcome::sticking;
+    sliding += o == outcome::sliding;
+  }
+  EXPECT_GT(sticking, 20) << name;
+  EXPECT_GT(sliding, 20) << name;
+}
+
+TEST(LimitSet, MatchesBruteForceOnEveryProfile) {
+  for (const double w : {0.1, 1.0, 10.0}) {
+    expect_matches_brute_force(uniform_disk<>(), w, "disk");
+    expect_matches_brute_force(hertz<>(), w, "hertz");
+    expect_matches_brute_force(boussinesq<>(), w, "boussinesq");
+    expect_matches_brute_force(ring<>(), w, "ring");
+    expect_matches_brute_force(annulus<>(0.5), w, "annulus 0.5");
+    expect_matches_brute_force(elliptic_limit_surface<>(), w, "ellipse");
+  }
+}
+
+TEST(LimitSet, MatchesBruteForceOnATabulatedProfile) {
+  const tabulated_profile<> cd{annulus<>(0.125)};
+  for (const double w : {0.1, 1.0, 10.0}) expect_matches_brute_force(cd, w, "tabulated CD");
+}
+
+// P = C(ε) + λ(wε, 1) has the displacement along the curve's normal in the
+// metric, so it projects to C(ε) at ratio ε.
+template <class P>
+void expect_normal_projects_to_foot(const P& p, double w, double eps, double lambda,
+                                    double ratio_tolerance, const std::string& name) {
+  const auto c = p.force_torque(eps);
+  const double x = c.force + lambda * w * eps, y = c.torque + lambda;
+  const auto r = project_to_limit_set(p, x, y, w);
+  const std::string where = name + " w=" + std::to_string(w) + " eps=" + std::to_string(eps) +
+                            " lambda=" + std::to_string(lambda);
+  EXPECT_FALSE(r.sticking) << where;
+  EXPECT_NEAR(r.ratio / eps, 1, ratio_tolerance) << where;
+  EXPECT_NEAR(r.force, c.force, 4e-16 + 1e-13 * x) << where;
+  EXPECT_NEAR(r.torque, c.torque, 4e-16 + 1e-13 * y) << where;
+}
+
+template <class P>
+void expect_exact_normals(const P& p, double ratio_tolerance, const std::string& name) {
+  for (const double w : {0.05, 1.0, 20.0})
+    for (const double eps : {1e-6, 1e-3, 0.1, 0.5, 0.653, 1.0, 1.5, 3.0, 30.0, 1e3, 1e6})
+      for (const double lambda : {1e-3, 0.1, 2.0})
+        expect_normal_projects_to_foot(p, w, eps, lambda, ratio_tolerance, name);
+}
+
+TEST(LimitSet, PointsOnANormalProjectToItsFoot) {
+  expect_exact_normals(uniform_disk<>(), 1e-10, "disk");
+  expect_exact_normals(hertz<>(), 1e-10, "hertz");
+  expect_exact_normals(boussinesq<>(), 1e-10, "boussinesq");
+  expect_exact_normals(tabulated_profile<>(annulus<>(0.125)), 1e-8, "tabulated CD");
+}
+
+// Normality to 1e-12: (x − 𝓕) = wε(y − 𝓣) relative to the displacement, at
+// points at least 1e-3 from the curve.
+template <class Real, class P>
+double worst_normality(const P& p, Real w) {
+  double worst = 0;
+  const auto& pts = random_points();
+  for (std::size_t i = 0; i < pts.x.size(); ++i) {
+    const Real x = Real(pts.x[i]) + 1, y = Real(pts.y[i]) + Real(0.7);  // outside L
+    const auto r = project_to_limit_set(p, x, y, w);
+    EXPECT_FALSE(r.sticking);
+    const Real along = x - r.force, up = w * r.ratio * (y - r.torque);
+    using std::fabs;
+    worst = std::max(worst, static_cast<double>(fabs(along - up) / (along + up)));
+  }
+  return worst;
+}
+
+TEST(LimitSet, NormalTo1e12) {
+  for (const double w : {0.1, 1.0, 10.0}) {
+    EXPECT_LE(worst_normality(uniform_disk<>(), w), 1e-12) << w;
+    EXPECT_LE(worst_normality(hertz<>(), w), 1e-12) << w;
+    EXPECT_LE(worst_normality(boussinesq<>(), w), 1e-12) << w;
+    EXPECT_LE(worst_normality(tabulated_profile<>(annulus<>(0.125)), w), 1e-12) << w;
+  }
+}
+
+TEST(LimitSet, EveryRealType) {
+  EXPECT_LE(worst_normality(uniform_disk<float>(), 1.0f), 1e-5);
+  EXPECT_LE(worst_normality(hertz<long double>(), 1.0L), 1e-15);
+  using big = boost::multiprecision::cpp_bin_float_50;
+  EXPECT_LE(worst_normality(boussinesq<big>(), big(2)), 1e-40);
+}
+
+TEST(LimitSet, CornersAndEdges) {
+  const hertz<> p;
+  const double top = p.mean_radius();
+  for (const double x : {1.0 + 1e-15, 1.5, 1e300}) {
+    const auto r = project_to_limit_set(p, x, 0.0, 1.0);
+    EXPECT_FALSE(r.sticking);
+    EXPECT_EQ(r.force, 1);
+    EXPECT_EQ(r.torque, 0);
+    EXPECT_EQ(r.ratio, std::numeric_limits<double>::infinity());
+  }
+  for (const double y : {top * (1 + 1e-15), 1.0, 1e300}) {
+    const auto r = project_to_limit_set(p, 0.0, y, 2.0);
+    EXPECT_FALSE(r.sticking);
+    EXPECT_EQ(r.force, 0);
+    EXPECT_EQ(r.torque, top);
+    EXPECT_EQ(r.ratio, 0);
+  }
+  // On the axes and the corners: sticking.
+  for (const auto& c : {force_torque_result<double>{0, 0}, {1, 0}, {0, top}, {0.5, 0}, {0, 0.3}}) {
+    const auto r = project_to_limit_set(p, c.force, c.torque, 1.0);
+    EXPECT_TRUE(r.sticking) << c.force << ", " << c.torque;
+    EXPECT_EQ(r.force, c.force);
+    EXPECT_EQ(r.torque, c.torque);
+  }
+  // On the curve, to rounding: sticking, or the point itself.
+  for (const double eps : {1e-3, 0.653, 1.0, 40.0, 1e4}) {
+    const auto c = p.force_torque(eps);
+    const auto r = project_to_limit_set(p, c.force, c.torque, 1.0);
+    EXPECT_NEAR(r.force, c.force, 1e-15) << eps;
+    EXPECT_NEAR(r.torque, c.torque, 1e-15) << eps;
+  }
+}
+
+// The uncoupled caps' set is the box [0, 1] × [0, cap]: the projection clamps.
+TEST(LimitSet, UncoupledCapsClamp) {
+  const uncoupled_caps<> caps(0.5);
+  const auto& pts = random_points();
+  for (std::size_t i = 0; i < pts.x.size(); ++i) {
+    const double x = 2 * pts.x[i], y = 2 * pts.y[i];
+    const auto r = project_to_limit_set(caps, x, y, 3.0);
+    const bool inside = x <= 1 && y <= 0.5;
+    EXPECT_EQ(r.sticking, inside) << x << ", " << y;
+    EXPECT_NEAR(r.force, std::min(x, 1.0), 1e-15) << x << ", " << y;
+    EXPECT_NEAR(r.torque, std::min(y, 0.5), 1e-15) << x << ", " << y;
+  }
+}
+
+TEST(LimitSet, AStartingRatioGivesTheSameProjection) {
+  const hertz<> p;
+  const auto& pts = random_points();
+  for (std::size_t i = 0; i < pts.x.size(); ++i) {
+    const double x = pts.x[i] + 0.5, y = pts.y[i] + 0.3;
+    const auto cold = project_to_limit_set(p, x, y, 1.0);
+    for (const double start : {1e-8, 0.01, 1.0, 100.0, 1e8}) {
+      const auto warm = project_to_limit_set(p, x, y, 1.0, starting_ratio<double>{start});
+      ASSERT_EQ(warm.sticking, cold.sticking);
+      if (cold.sticking) continue;
+      EXPECT_NEAR(warm.ratio / cold.ratio, 1, 1e-12) << x << ", " << y << " from " << start;
+      EXPECT_NEAR(warm.force, cold.force, 1e-14);
+      EXPECT_NEAR(warm.torque, cold.torque, 1e-14);
+    }
+  }
+}
+
+// With the last step's ratio, a projection that moved little converges in a
+// few evaluations: with 𝓕′ in closed form (Hertz), the start and one Newton
+// step, then the converged ratio (3 of 𝓕 and 𝓣, 2 of 𝓕′); without (a
+// tabulated profile), the start, a difference for 𝓕′, two secant steps and
+// the converged ratio (5).
+template <class P>
+void expect_evaluations_from_nearby_start(const P& p, int calls, int slopes) {
+  for (const double eps : {0.05, 0.653, 2.0, 50.0}) {
+    const auto c = p.force_torque(eps);
+    const double x = c.force + 0.3 * eps, y = c.torque + 0.3;
+    p.calls = p.slopes = 0;
+    const auto r = project_to_limit_set(p, x, y, 1.0, starting_ratio<double>{eps * (1 + 1e-4)});
+    EXPECT_NEAR(r.ratio / eps, 1, 1e-12) << eps;
+    EXPECT_LE(p.calls, calls) << eps;
+    EXPECT_LE(p.slopes, slopes) << eps;
+  }
+}
+
+TEST(LimitSet, NearbyStartTakesFewEvaluations) {
+  expect_evaluations_from_nearby_start(counted<hertz<>>(hertz<>()), 3, 2);
+  expect_evaluations_from_nearby_start(
+      counted<tabulated_profile<>>(tabulated_profile<>(annulus<>(0.125))), 5, 0);
+}
+
+TEST(LimitSet, BadInputIsADomainError) {
+  const uniform_disk<> p;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const double bad : {-1.0, -0.0 - 1e-300, nan, inf}) {
+    EXPECT_THROW(project_to_limit_set(p, bad, 0.5, 1.0), std::domain_error) << bad;
+    EXPECT_THROW(project_to_limit_set(p, 0.5, bad, 1.0), std::domain_error) << bad;
+  }
+  for (const double bad : {0.0, -1.0, nan, inf})
+    EXPECT_THROW(project_to_limit_set(p, 0.5, 0.5, bad), std::domain_error) << bad;
+  for (const double bad : {-1.0, nan})
+    EXPECT_THROW(project_to_limit_set(p, 0.5, 0.5, 1.0, starting_ratio<double>{bad}),
+                 std::domain_error)
+        << bad;
+  try {
+    project_to_limit_set(p, 0.5, -2.0, 1.0);
+    FAIL() << "no exception";
+  } catch (const std::domain_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("project_to_limit_set"), std::string::npos) << what;
+    EXPECT_NE(what.find("torque"), std::string::npos) << what;
+  }
+}
+
+TEST(LimitSet, BadInputUnderErrnoIsNaN) {
+  using errno_policy = boost::math::policies::policy<
+      boost::math::policies::domain_error<boost::math::policies::errno_on_error>>;
+  const uniform_disk<double, errno_policy> p;
+  errno = 0;
+  const auto r = project_to_limit_set(p, 0.5, 0.5, -1.0);
+  EXPECT_EQ(errno, EDOM);
+  EXPECT_TRUE(std::isnan(r.force));
+  EXPECT_TRUE(std::isnan(r.torque));
+  EXPECT_TRUE(std::isnan(r.ratio));
+  EXPECT_FALSE(r.sticking);
+}
+
+}  // namespace
