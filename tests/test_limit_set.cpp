@@ -146,7 +146,8 @@ outcome expect_point_matches_brute_force(const P& p, double x, double y, double 
   }
   const double d2 = (r.force - x) * (r.force - x) + w * (r.torque - y) * (r.torque - y);
   const double best = brute_force_squared_distance(p, x, y, w);
-  EXPECT_LE(d2, best * (1 + 1e-12) + 1e-30) << where;
+  // An ulp of 𝓕 or 𝓣 moves d2 by about 2·distance·1.1e-16: the bound allows a few.
+  EXPECT_LE(d2, best * (1 + 1e-12) + 1e-15 * std::sqrt(best)) << where;
   EXPECT_GE(d2, best * (1 - 1e-9)) << where << " (closer than the curve's nearest point?)";
   return outcome::sliding;
 }
@@ -312,10 +313,9 @@ TEST(LimitSet, AStartingRatioGivesTheSameProjection) {
 }
 
 // With the last step's ratio, a projection that moved little converges in a
-// few evaluations: with 𝓕′ in closed form (Hertz), the start and one Newton
-// step, then the converged ratio (3 of 𝓕 and 𝓣, 2 of 𝓕′); without (a
-// tabulated profile), the start, a difference for 𝓕′, two secant steps and
-// the converged ratio (5).
+// few evaluations: with 𝓕′ in closed form (Hertz), the start and two Newton
+// steps (3 of 𝓕 and 𝓣, 3 of 𝓕′); without (a tabulated profile), the start, a
+// difference for 𝓕′ and three secant steps (5).
 template <class P>
 void expect_evaluations_from_nearby_start(const P& p, int calls, int slopes) {
   for (const double eps : {0.05, 0.653, 2.0, 50.0}) {
@@ -330,7 +330,7 @@ void expect_evaluations_from_nearby_start(const P& p, int calls, int slopes) {
 }
 
 TEST(LimitSet, NearbyStartTakesFewEvaluations) {
-  expect_evaluations_from_nearby_start(counted<hertz<>>(hertz<>()), 3, 2);
+  expect_evaluations_from_nearby_start(counted<hertz<>>(hertz<>()), 3, 3);
   expect_evaluations_from_nearby_start(
       counted<tabulated_profile<>>(tabulated_profile<>(annulus<>(0.125))), 5, 0);
 }

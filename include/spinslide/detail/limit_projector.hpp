@@ -138,41 +138,52 @@ class limit_projector {
     } else {
       if (previous_.eps != a.eps && previous_.eps > 0 && previous_.eps < inf())
         return (a.ft.force - previous_.ft.force) / (a.eps - previous_.eps);
-      const Real e = a.eps * (1 + tolerances().difference);
+      const Real e = a.eps * (1 + difference_step());
       return (profile_.force(e) - a.ft.force) / (e - a.eps);
     }
   }
 
-  struct tolerance_set {
-    Real step;        // a relative Newton step below which the next error is rounding
-    Real difference;  // the relative step of the first difference quotient
-  };
-  // √epsilon for Newton's quadratic convergence, epsilon^0.62 for the
-  // secant's order 1.6; computed once per type.
-  static const tolerance_set& tolerances() {
-    using std::pow;
+  // epsilon^(4/3): (r m)^0.75 ≤ epsilon (next_ratio).
+  static Real converged_product() {
+    using std::cbrt;
+    static const Real p =
+        boost::math::tools::epsilon<Real>() * cbrt(boost::math::tools::epsilon<Real>());
+    return p;
+  }
+  // The relative step of the first difference quotient, √epsilon.
+  static Real difference_step() {
     using std::sqrt;
-    static const tolerance_set t = {has_force_slope<Profile>()
-                                        ? sqrt(boost::math::tools::epsilon<Real>())
-                                        : pow(boost::math::tools::epsilon<Real>(), Real(0.62)),
-                                    sqrt(boost::math::tools::epsilon<Real>())};
-    return t;
+    static const Real h = sqrt(boost::math::tools::epsilon<Real>());
+    return h;
   }
 
   // Newton's step in ε (dh/dε = −𝓕′(1 + wε²) − w(y − 𝓣)), kept inside the
   // bracket; where it leaves it, or has not halved h since the last sample
   // (far from the root, where h is not near linear), a step that shrinks the
-  // bracket instead.
+  // bracket instead.  Converged once the error after this step is predicted
+  // below epsilon: (r m)^0.75 with r the relative step and m = r for Newton
+  // (and the first step, from a difference quotient), m = the last step for
+  // the secant (order 1.6); the power 0.75 allows for the order lost where
+  // 𝓕″ is singular (Boussinesq's at ε = 1, where Newton has order 1.5).  A
+  // step below epsilon is not taken at all.
   step next_ratio(const sample& a) {
+    using boost::math::tools::epsilon;
     using std::fabs;
     const Real slope = -(force_slope_at(a) * (1 + w_ * a.eps * a.eps) + w_ * (y_ - a.ft.torque));
     const Real next = a.eps - a.h / slope;
     const bool slow = previous_.eps > 0 && fabs(a.h) > fabs(previous_.h) / 2;
     if (slope < 0 && !slow) {
-      // A step this small is taken even if rounding put it on a side of the bracket.
-      if (fabs(next - a.eps) <= tolerances().step * a.eps) return {next, step_kind::converged};
-      if (next > lo_.eps && next < hi_.eps) return {next, step_kind::search};
+      const Real r = fabs(next - a.eps) / a.eps;
+      const bool secant = !has_force_slope<Profile>() && last_step_ < 1;
+      // A converged step is taken even if rounding put it on a side of the bracket.
+      if (r <= epsilon<Real>()) return {a.eps, step_kind::converged};
+      if (r * (secant ? last_step_ : r) <= converged_product()) return {next, step_kind::converged};
+      if (next > lo_.eps && next < hi_.eps) {
+        last_step_ = r;
+        return {next, step_kind::search};
+      }
     }
+    last_step_ = 1;  // the next secant is not a Newton-like step
     return shrink();
   }
 
@@ -237,6 +248,7 @@ class limit_projector {
   Real x_, y_, w_, top_;
   sample lo_{}, hi_{}, previous_{};
   Real reach_ = 8;
+  Real last_step_ = 1;  // the last Newton or secant step, relative (1: none yet)
 };
 
 }  // namespace detail
