@@ -313,9 +313,10 @@ TEST(LimitSet, AStartingRatioGivesTheSameProjection) {
 }
 
 // With the last step's ratio, a projection that moved little converges in a
-// few evaluations: with 𝓕′ in closed form (Hertz), the start and two Newton
-// steps (3 of 𝓕 and 𝓣, 3 of 𝓕′); without (a tabulated profile), the start, a
-// difference for 𝓕′ and three secant steps (5).
+// few evaluations: with 𝓕′ in closed form (Hertz, a tabulated profile), the
+// start and two Newton steps (3 of 𝓕 and 𝓣, 3 of 𝓕′); without (the uniform
+// disk, whose Carlson-form 𝓕′ is not used), the start, a difference for 𝓕′
+// and three secant steps (5).
 template <class P>
 void expect_evaluations_from_nearby_start(const P& p, int calls, int slopes) {
   for (const double eps : {0.05, 0.653, 2.0, 50.0}) {
@@ -332,7 +333,8 @@ void expect_evaluations_from_nearby_start(const P& p, int calls, int slopes) {
 TEST(LimitSet, NearbyStartTakesFewEvaluations) {
   expect_evaluations_from_nearby_start(counted<hertz<>>(hertz<>()), 3, 3);
   expect_evaluations_from_nearby_start(
-      counted<tabulated_profile<>>(tabulated_profile<>(annulus<>(0.125))), 5, 0);
+      counted<tabulated_profile<>>(tabulated_profile<>(annulus<>(0.125))), 3, 3);
+  expect_evaluations_from_nearby_start(counted<uniform_disk<>>(uniform_disk<>()), 5, 0);
 }
 
 TEST(LimitSet, BadInputIsADomainError) {

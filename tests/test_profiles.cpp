@@ -611,6 +611,32 @@ TEST(Tabulated, Within1e10EverywhereForEveryProfile) {
   expect_tabulated(two_tier(), "two-tier");
 }
 
+// The table's 𝓕′ (the derivative of its interpolant) against the closed-form
+// 𝓕′ of the source: the disk's force_derivative (Carlson forms) and Hertz's
+// and Boussinesq's (elementary), over ε from 1e-9 to 1e9 and across ε = 1
+// (where Boussinesq's 𝓕″ is singular); exact ends.
+template <class Slope>
+double worst_tabulated_slope(const tabulated_profile<>& tab, Slope exact) {
+  double worst = 0;
+  for (double e = 1e-9; e < 1e9; e *= 1.0173)
+    worst = std::max(worst, relative_difference(tab.force_derivative(e), exact(e)));
+  for (double e = 0.99; e < 1.01; e += 1.3e-4)
+    worst = std::max(worst, relative_difference(tab.force_derivative(e), exact(e)));
+  return worst;
+}
+
+TEST(Tabulated, ForceDerivativeOfTheTable) {
+  const tabulated_profile<> disk{uniform_disk<>()}, h{hertz<>()}, b{boussinesq<>()};
+  EXPECT_LE(worst_tabulated_slope(disk, [](double e) { return force_derivative(e); }), 1e-7);
+  EXPECT_LE(worst_tabulated_slope(h, [](double e) { return hertz<>().force_derivative(e); }), 1e-7);
+  EXPECT_LE(worst_tabulated_slope(b, [](double e) { return boussinesq<>().force_derivative(e); }),
+            1e-7);
+  EXPECT_NEAR(disk.force_derivative(0.0), 1.0, 1e-12);  // ⟨1/r⟩/2
+  EXPECT_EQ(disk.force_derivative(INFINITY), 0.0);
+  EXPECT_THROW(disk.force_derivative(-1.0), std::domain_error);
+  EXPECT_THROW(disk.force_derivative(NAN), std::domain_error);
+}
+
 TEST(Tabulated, SharedBetweenThreadsGivesTheSerialResults) {
   const tabulated_profile<> tab{hertz<>()};
   std::vector<double> xs;

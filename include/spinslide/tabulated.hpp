@@ -69,6 +69,30 @@ class tabulated_profile : public profile_base<tabulated_profile<Real, Policy>, R
   /// ⟨r²⟩ of the tabulated profile.
   Real mean_square_radius() const { return mean_square_; }
 
+  /// 𝓕′(ε) of the table, from the derivative of its piecewise polynomials,
+  /// for ε ∈ [0, ∞] (0 at ∞); NaN or ε < 0 is a domain error.  With
+  /// t = ε/(1+ε), s = 1 − t and dt/dε = s²: for ε ≤ 1, 𝓕 = t g_F gives
+  /// 𝓕′ = (g_F + t g_F′) s²; for ε > 1, where that sum cancels down to
+  /// O(1/ε), 𝓣 = s g_T and 𝓣′ = −ε𝓕′ (docs/theory.md (I2)) give
+  /// 𝓕′ = (g_T − s g_T′) s²/ε, a sum of like terms.  Tests hold it to 1e-7 of
+  /// the profile's own 𝓕′.  It lets project_to_limit_set take Newton steps
+  /// on a tabulated profile (limit_set.hpp).
+  Real force_derivative(Real eps) const {
+    Real bad = 0;
+    if (!detail::check("spinslide::tabulated_profile<%1%>::force_derivative(%1%)", "eps", eps,
+                       detail::argument_rule::non_negative, &bad, Policy()))
+      return bad;
+    if ((boost::math::isinf)(eps)) return 0;
+    const Real s = 1 / (1 + eps);
+    const Real t = eps * s;
+    if (eps <= 1) {
+      const auto g = table_.with_slope(t, 0);
+      return (g.first + t * g.second) * s * s;
+    }
+    const auto g = table_.with_slope(t, 1);
+    return (g.first - s * g.second) * s * s / eps;
+  }
+
   /// The number of Chebyshev pieces.
   std::size_t pieces() const { return table_.size(); }
   /// The deepest bisection level used.

@@ -131,20 +131,25 @@ class piecewise_chebyshev_pair {
 
   /// Both approximations at t ∈ [0, 1]; no allocation.
   std::pair<Real, Real> operator()(Real t) const {
-    std::size_t b = static_cast<std::size_t>(t * Real(buckets));
-    if (b >= buckets) b = buckets - 1;
-    std::size_t i = bucket_[b];
-    const std::size_t last = bucket_[b + 1];
-    if (i != last) {  // several pieces in this bucket: bisect among them
-      const auto it = std::upper_bound(starts_.begin() + std::ptrdiff_t(i) + 1,
-                                       starts_.begin() + std::ptrdiff_t(last) + 1, t);
-      i = std::size_t(it - starts_.begin()) - 1;
-    }
-    const evaluation_piece& p = fast_[i];
+    const evaluation_piece& p = piece_at(t);
     const Real x = (t - p.mid) * p.scale;
     Real s0, s1;
     horner_pair<Degree>(p.m.data(), 0, 1, 2, x, s0, s1);
     return {s0, s1};
+  }
+
+  /// One approximation (`which`: 0 the first, 1 the second) and its
+  /// derivative in t at t ∈ [0, 1] (Horner's scheme carrying the derivative
+  /// along); no allocation.
+  std::pair<Real, Real> with_slope(Real t, std::size_t which) const {
+    const evaluation_piece& p = piece_at(t);
+    const Real x = (t - p.mid) * p.scale;
+    Real value = p.m[2 * Degree + which], slope = 0;
+    for (std::size_t k = Degree; k-- > 0;) {
+      slope = slope * x + value;
+      value = value * x + p.m[2 * k + which];
+    }
+    return {value, slope * p.scale};
   }
 
   /// The Chebyshev form of both approximations at t (for tests of the
@@ -159,6 +164,19 @@ class piecewise_chebyshev_pair {
   }
 
  private:
+  const evaluation_piece& piece_at(Real t) const {
+    std::size_t b = static_cast<std::size_t>(t * Real(buckets));
+    if (b >= buckets) b = buckets - 1;
+    std::size_t i = bucket_[b];
+    const std::size_t last = bucket_[b + 1];
+    if (i != last) {  // several pieces in this bucket: bisect among them
+      const auto it = std::upper_bound(starts_.begin() + std::ptrdiff_t(i) + 1,
+                                       starts_.begin() + std::ptrdiff_t(last) + 1, t);
+      i = std::size_t(it - starts_.begin()) - 1;
+    }
+    return fast_[i];
+  }
+
   template <class F>
   void build(F& f, Real a, Real b, Real tolerance, int depth, int max_depth) {
     using std::fabs;
