@@ -31,6 +31,7 @@
 #define SPINSLIDE_DETAIL_LIMIT_PROJECTOR_HPP
 
 #include <spinslide/detail/force_slope.hpp>
+#include <spinslide/detail/product.hpp>
 #include <spinslide/disk.hpp>
 
 #include <boost/math/policies/error_handling.hpp>
@@ -106,13 +107,20 @@ class limit_projector {
 
   sample evaluate(Real eps) const {
     const auto ft = profile_.force_torque(eps);
-    return {eps, ft, (x_ - ft.force) - w_ * eps * (y_ - ft.torque)};
+    // wε(y − 𝓣) as one product: w·ε alone can underflow (w = 1e-187,
+    // ε = 1e-234) where the whole is a normal number.
+    return {eps, ft, (x_ - ft.force) - product(w_, eps, y_ - ft.torque)};
   }
 
   // A given ratio, or where the root lies if P is far from L (x − 𝓕 ≈ x,
   // y − 𝓣 ≈ y), kept within three decades of 1.
   Real first_ratio(Real start) const {
-    if (start > 0 && start < inf()) return start;
+    using boost::math::tools::max_value;
+    using boost::math::tools::min_value;
+    // The search stays among the normal numbers (below them 𝓕's differences
+    // and the ratio itself lose their digits; the ends are edges, shrink()).
+    if (start > 0 && start < inf())
+      return (std::min)((std::max)(start, min_value<Real>()), max_value<Real>());
     return (std::min)((std::max)(x_ / (w_ * y_), Real(1e-3)), Real(1e3));
   }
 
@@ -130,17 +138,32 @@ class limit_projector {
       hi_ = a;
   }
 
-  // 𝓕′(ε): closed form, or the secant through the previous sample, or a
-  // forward difference (one more evaluation) for the first.
-  Real force_slope_at(const sample& a) const {
+  // 𝓕′(ε) and how far it may be off, relative: the closed form (0), or the
+  // secant through the previous sample if it is within 10 % (off by about
+  // their distance), or else a forward difference (one more evaluation; off
+  // by about its step, √epsilon).  A secant over a wider gap, as after a
+  // bisection, is not trusted: a wrong slope gives a small step far from the
+  // root.
+  struct slope_estimate {
+    Real slope, uncertainty;
+  };
+  slope_estimate force_slope_at(const sample& a) const {
     if constexpr (has_force_slope<Profile>()) {
-      return force_slope(profile_, a.eps);
+      return {force_slope(profile_, a.eps), Real(0)};
     } else {
-      if (previous_.eps != a.eps && previous_.eps > 0 && previous_.eps < inf())
-        return (a.ft.force - previous_.ft.force) / (a.eps - previous_.eps);
+      using std::fabs;
+      const Real gap = fabs(a.eps - previous_.eps) / a.eps;
+      if (gap > 0 && gap <= Real(0.1)) return {secant_slope(a, previous_), gap};
       const Real e = a.eps * (1 + difference_step());
-      return (profile_.force(e) - a.ft.force) / (e - a.eps);
+      return {secant_slope(a, {e, profile_.force_torque(e), Real(0)}), difference_step()};
     }
+  }
+  // The secant of 𝓕 for ε ≤ 1; above, where 𝓕 approaches 1 and its
+  // differences round away (to 0 once 𝓕 rounds to 1), the secant of 𝓣
+  // through 𝓣′ = −ε𝓕′ at the midpoint.
+  static Real secant_slope(const sample& a, const sample& b) {
+    if (a.eps <= 1) return (a.ft.force - b.ft.force) / (a.eps - b.eps);
+    return -(a.ft.torque - b.ft.torque) / ((a.eps - b.eps) * ((a.eps + b.eps) / 2));
   }
 
   // epsilon^(4/3): (r m)^0.75 ≤ epsilon (next_ratio).
@@ -161,29 +184,30 @@ class limit_projector {
   // bracket; where it leaves it, or has not halved h since the last sample
   // (far from the root, where h is not near linear), a step that shrinks the
   // bracket instead.  Converged once the error after this step is predicted
-  // below epsilon: (r m)^0.75 with r the relative step and m = r for Newton
-  // (and the first step, from a difference quotient), m = the last step for
-  // the secant (order 1.6); the power 0.75 allows for the order lost where
-  // 𝓕″ is singular (Boussinesq's at ε = 1, where Newton has order 1.5).  A
-  // step below epsilon is not taken at all.
+  // below epsilon: (r m)^0.75 with r the relative step and m the larger of r
+  // (Newton's quadratic term) and the slope's uncertainty (the secant's); the
+  // power 0.75 allows for the order lost where 𝓕″ is singular (Boussinesq's
+  // at ε = 1, where Newton has order 1.5).  A step below epsilon is not taken.
   step next_ratio(const sample& a) {
     using boost::math::tools::epsilon;
     using std::fabs;
-    const Real slope = -(force_slope_at(a) * (1 + w_ * a.eps * a.eps) + w_ * (y_ - a.ft.torque));
+    const slope_estimate d = force_slope_at(a);
+    const Real slope =
+        -(d.slope + product(d.slope, w_, a.eps, a.eps) + product(w_, y_ - a.ft.torque));
     const Real next = a.eps - a.h / slope;
     const bool slow = previous_.eps > 0 && fabs(a.h) > fabs(previous_.h) / 2;
-    if (slope < 0 && !slow) {
+    // An infinite slope or h (wε² or wε(y − 𝓣) beyond the largest value)
+    // would give a zero step and a false convergence.
+    const bool finite = (boost::math::isfinite)(slope) && (boost::math::isfinite)(a.h);
+    if (slope < 0 && !slow && finite) {
       const Real r = fabs(next - a.eps) / a.eps;
-      const bool secant = !has_force_slope<Profile>() && last_step_ < 1;
       // A converged step is taken even if rounding put it on a side of the bracket.
       if (r <= epsilon<Real>()) return {a.eps, step_kind::converged};
-      if (r * (secant ? last_step_ : r) <= converged_product()) return {next, step_kind::converged};
-      if (next > lo_.eps && next < hi_.eps) {
-        last_step_ = r;
-        return {next, step_kind::search};
-      }
+      if (r * (std::max)(r, d.uncertainty) <= converged_product())
+        return {next, step_kind::converged};
+      const bool normal = next >= boost::math::tools::min_value<Real>();
+      if (next > lo_.eps && next < hi_.eps && normal) return {next, step_kind::search};
     }
-    last_step_ = 1;  // the next secant is not a Newton-like step
     return shrink();
   }
 
@@ -230,9 +254,12 @@ class limit_projector {
     // P is inside if it lies on the inner side of the chord (to its right,
     // going from the ε = 0 side to the ε = ∞ side).
     if (df * py - dt * px < 0) return sticking();
-    const Real norm = df * df + w_ * dt * dt;
-    const Real along = norm > 0 ? (px * df + w_ * py * dt) / norm : Real(0);
-    const Real lambda = (std::min)((std::max)(along, Real(0)), Real(1));
+    // The metric's products taken with the larger of 1 and w divided out,
+    // so that w·py·dt cannot overflow (w up to the largest value).
+    const Real wf = w_ > 1 ? 1 / w_ : Real(1), wt = w_ > 1 ? Real(1) : w_;
+    const Real norm = wf * df * df + wt * dt * dt;
+    const Real along = norm > 0 ? (wf * px * df + wt * py * dt) / norm : Real(0);
+    const Real lambda = along > 0 ? (std::min)(along, Real(1)) : Real(0);
     const Real ratio = lo_.eps == 0 ? Real(0) : hi_.eps == inf() ? inf() : sqrt(lo_.eps * hi_.eps);
     return on_curve(ratio, {lo_.ft.force + lambda * df, lo_.ft.torque + lambda * dt});
   }
@@ -248,7 +275,6 @@ class limit_projector {
   Real x_, y_, w_, top_;
   sample lo_{}, hi_{}, previous_{};
   Real reach_ = 8;
-  Real last_step_ = 1;  // the last Newton or secant step, relative (1: none yet)
 };
 
 }  // namespace detail
