@@ -14,6 +14,7 @@
 
 #include "zoo.hpp"
 
+#include <spinslide/coupling.hpp>
 #include <spinslide/limit_set.hpp>
 
 #include <cmath>
@@ -62,11 +63,27 @@ void check_nearest(const P& p, const query& q, const spinslide::limit_projection
   }
 }
 
+// A sticking point lies in L: x ≤ 1 and y ≤ 𝓣 where 𝓕 = x (from the
+// coupling inverse; the uncoupled caps' box: y ≤ ⟨r⟩), to 1e-9.
 template <class P>
-void check_projection(const P& p, const query& q, const spinslide::limit_projection<double>& r) {
+void check_inside(const P& p, const query& q, bool caps) {
+  check(q.x <= 1 + 1e-12, "project_to_limit_set", "sticking with f > 1");
+  const double top = p.mean_radius();
+  if (q.x >= 1 - 1e-9 || q.x <= 1e-300) {
+    check(q.y <= top * (1 + 1e-9), "project_to_limit_set", "sticking with t > <r>");
+    return;
+  }
+  const double limit = caps ? top : spinslide::torque_at_force(p, q.x);
+  check(q.y <= limit * (1 + 1e-9) + 1e-9 * top, "project_to_limit_set", "sticking above the curve");
+}
+
+template <class P>
+void check_projection(const P& p, const query& q, const spinslide::limit_projection<double>& r,
+                      bool caps) {
   if (r.sticking) {
     check(r.force == q.x && r.torque == q.y, "project_to_limit_set", "sticking but moved");
     check(std::isnan(r.ratio), "project_to_limit_set", "sticking with a ratio");
+    check_inside(p, q, caps);
     return;
   }
   check_finite(r.force, "project_to_limit_set", "force");
@@ -87,6 +104,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using P = std::decay_t<decltype(p)>;
     if constexpr (projectable<P>::value) {
       context() += std::string(" profile=") + name;
+      const bool caps = std::string(name) == "uncoupled_caps";
       const query q{in.unit<double>() * 2, in.unit<double>() * 2, in.real<double>()};
       const double start = in.real<double>();
       describe("force", q.x);
@@ -98,13 +116,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       spinslide::limit_projection<double> cold{};
       const bool ran = expect(v, "project_to_limit_set", [&] {
         cold = spinslide::project_to_limit_set(p, q.x, q.y, q.w);
-        check_projection(p, q, cold);
+        check_projection(p, q, cold, caps);
       });
       const validity vs = v == validity::valid ? valid_if(start >= 0) : v;
       expect(vs, "project_to_limit_set(start)", [&] {
         const auto warm = spinslide::project_to_limit_set(p, q.x, q.y, q.w,
                                                           spinslide::starting_ratio<double>{start});
-        check_projection(p, q, warm);
+        check_projection(p, q, warm, caps);
         if (ran && warm.sticking == cold.sticking && !cold.sticking) {
           // Both nearest to rounding.
           const double dc = squared(q, cold.force, cold.torque);

@@ -375,3 +375,49 @@ TEST(LimitSet, BadInputUnderErrnoIsNaN) {
 }
 
 }  // namespace
+
+// What fuzz_limit_set found (docs/reliability.md): extreme weights, starts
+// and points.  Each answer against an independent expectation.
+namespace {
+using spinslide::limit_projection;
+
+// y and w so large that the nearest point keeps t = ⟨r⟩ (a NaN on the edge:
+// w·py·dt overflowed; a point 1e59 above L called sticking: the chord beside
+// C(0) is 1e-308 long and its dt a rounding), or x so small that the ratio is below the normal
+// numbers (200 iterations: w·ε underflowed where w·ε·(y − 𝓣) did not): (0, ⟨r⟩).
+template <class P>
+void expect_top_corner(const P& p, double x, double y, double w, double start) {
+  const auto r = project_to_limit_set(p, x, y, w, starting_ratio<double>{start});
+  EXPECT_FALSE(r.sticking);
+  EXPECT_LE(r.force, 1e-300);
+  EXPECT_NEAR(r.torque, p.mean_radius(), 4e-16);
+  EXPECT_LE(r.ratio, 1e-300);
+}
+
+TEST(LimitSet, RegressionExtremeWeightsAndStarts) {
+  expect_top_corner(boussinesq<>(), 1.95348765586094685887, 1.15351090092546449726e+296,
+                    2.11026362537199988824e+175, 1.37052415512338026281e+119);
+  expect_top_corner(annulus<>(0.799043829558668927682), 0.815145591850808037826,
+                    4.23061598482764408254e+59, 8.54771847257657087713e+255,
+                    2.04377665386919251697e-318);
+  expect_top_corner(boussinesq<>(), 1.03654972497493524968e-320, 5.06284469171929408671e+186,
+                    1.2570722610211577088e-187, 0.0);
+  // w = 8e194: the nearest point has t = y to rounding (a false convergence at
+  // ε = 1e77: w·ε² overflowed); its force from the coupling inverse.
+  const ring<> ring_profile;
+  const double y = 0.962379485841000303914;
+  const auto r = project_to_limit_set(ring_profile, 1.0, y, 8.27153894899409705595e+194,
+                                      starting_ratio<double>{9.35149256916424780703e+133});
+  EXPECT_NEAR(r.torque, y, 4e-16);
+  EXPECT_NEAR(r.force, force_at_torque(ring_profile, y), 1e-14);
+  // ε ≈ 8e14, where 𝓕 rounds to 1 - 1e-15 (a secant over a wide gap gave a
+  // small step far from the root): from a far start as from none.
+  const elliptic_limit_surface<> ellipse(38402850.280619814992);
+  const double x = 1.8269463011837359101, t = 1.84345448077861973069, w = 0.0581650085310874212507;
+  const auto cold = project_to_limit_set(ellipse, x, t, w);
+  const auto warm =
+      project_to_limit_set(ellipse, x, t, w, starting_ratio<double>{8.33894707852520555541e+107});
+  EXPECT_NEAR(warm.ratio / cold.ratio, 1, 1e-9);
+  EXPECT_NEAR(warm.torque, cold.torque, 1e-12);
+}
+}  // namespace

@@ -140,10 +140,10 @@ class limit_projector {
 
   // 𝓕′(ε) and how far it may be off, relative: the closed form (0), or the
   // secant through the previous sample if it is within 10 % (off by about
-  // their distance), or else a forward difference (one more evaluation; off
-  // by about its step, √epsilon).  A secant over a wider gap, as after a
-  // bisection, is not trusted: a wrong slope gives a small step far from the
-  // root.
+  // their distance, plus the rounding of the difference), or else a forward
+  // difference (one more evaluation; off by about its step, √epsilon, plus
+  // rounding).  A secant over a wider gap, as after a bisection, is not
+  // trusted: a wrong slope gives a small step far from the root.
   struct slope_estimate {
     Real slope, uncertainty;
   };
@@ -153,17 +153,23 @@ class limit_projector {
     } else {
       using std::fabs;
       const Real gap = fabs(a.eps - previous_.eps) / a.eps;
-      if (gap > 0 && gap <= Real(0.1)) return {secant_slope(a, previous_), gap};
+      if (gap > 0 && gap <= Real(0.1)) return secant_slope(a, previous_, gap);
       const Real e = a.eps * (1 + difference_step());
-      return {secant_slope(a, {e, profile_.force_torque(e), Real(0)}), difference_step()};
+      return secant_slope(a, {e, profile_.force_torque(e), Real(0)}, difference_step());
     }
   }
-  // The secant of 𝓕 for ε ≤ 1; above, where 𝓕 approaches 1 and its
+  // The secant of 𝓕 while 𝓕 ≤ 1/2; above, where 𝓕 approaches 1 and its
   // differences round away (to 0 once 𝓕 rounds to 1), the secant of 𝓣
-  // through 𝓣′ = −ε𝓕′ at the midpoint.
-  static Real secant_slope(const sample& a, const sample& b) {
-    if (a.eps <= 1) return (a.ft.force - b.ft.force) / (a.eps - b.eps);
-    return -(a.ft.torque - b.ft.torque) / ((a.eps - b.eps) * ((a.eps + b.eps) / 2));
+  // through 𝓣′ = −ε𝓕′ at the midpoint.  The uncertainty adds the relative
+  // rounding of the difference, epsilon (|u| + |v|)/|u − v|.
+  static slope_estimate secant_slope(const sample& a, const sample& b, Real gap) {
+    using std::fabs;
+    const bool by_force = a.ft.force <= Real(0.5);
+    const Real u = by_force ? a.ft.force : a.ft.torque, v = by_force ? b.ft.force : b.ft.torque;
+    const Real rounding = boost::math::tools::epsilon<Real>() * (fabs(u) + fabs(v)) / fabs(u - v);
+    const Real slope =
+        by_force ? (u - v) / (a.eps - b.eps) : -(u - v) / ((a.eps - b.eps) * ((a.eps + b.eps) / 2));
+    return {slope, gap + rounding};
   }
 
   // epsilon^(4/3): (r m)^0.75 ≤ epsilon (next_ratio).
@@ -252,8 +258,15 @@ class limit_projector {
     const Real df = hi_.ft.force - lo_.ft.force, dt = hi_.ft.torque - lo_.ft.torque;
     const Real px = x_ - lo_.ft.force, py = y_ - lo_.ft.torque;
     // P is inside if it lies on the inner side of the chord (to its right,
-    // going from the ε = 0 side to the ε = ∞ side).
-    if (df * py - dt * px < 0) return sticking();
+    // going from the ε = 0 side to the ε = ∞ side) by more than the rounding
+    // of the sides' 𝓕 and 𝓣 can decide (a chord 1e-308 long beside C(0) has
+    // dt = 𝓣(1e-308) − ⟨r⟩, a rounding), or in a sample's quadrilateral.
+    using std::fabs;
+    const Real cross = df * py - dt * px;
+    const Real rounding = 4 * boost::math::tools::epsilon<Real>() *
+                          (fabs(py) * (1 + fabs(df)) + fabs(px) * (top_ + fabs(dt)));
+    if (cross < -rounding || inside_quadrilateral(lo_.ft) || inside_quadrilateral(hi_.ft))
+      return sticking();
     // The metric's products taken with the larger of 1 and w divided out,
     // so that w·py·dt cannot overflow (w up to the largest value).
     const Real wf = w_ > 1 ? 1 / w_ : Real(1), wt = w_ > 1 ? Real(1) : w_;
