@@ -105,11 +105,20 @@ class limit_projector {
 
   static Real inf() { return std::numeric_limits<Real>::infinity(); }
 
+  // h, divided by w where w < 1 (the same root and signs): for a tiny w,
+  // w(y − 𝓣) in the slope would otherwise be subnormal and carry no digits
+  // (w = 7e-321).  wε(y − 𝓣) as one product: w·ε alone can underflow
+  // (w = 1e-187, ε = 1e-234) where the whole is a normal number.
   sample evaluate(Real eps) const {
     const auto ft = profile_.force_torque(eps);
-    // wε(y − 𝓣) as one product: w·ε alone can underflow (w = 1e-187,
-    // ε = 1e-234) where the whole is a normal number.
-    return {eps, ft, (x_ - ft.force) - product(w_, eps, y_ - ft.torque)};
+    const Real h = w_ < 1 ? (x_ - ft.force) / w_ - product(eps, y_ - ft.torque)
+                          : (x_ - ft.force) - product(w_, eps, y_ - ft.torque);
+    return {eps, ft, h};
+  }
+  // dh/dε (h as evaluate() scales it) for a slope 𝓕′ = `slope`.
+  Real h_slope(const sample& a, Real slope) const {
+    if (w_ < 1) return -(slope / w_ + product(slope, a.eps, a.eps) + (y_ - a.ft.torque));
+    return -(slope + product(slope, w_, a.eps, a.eps) + product(w_, y_ - a.ft.torque));
   }
 
   // A given ratio, or where the root lies if P is far from L (x − 𝓕 ≈ x,
@@ -186,7 +195,7 @@ class limit_projector {
     return h;
   }
 
-  // Newton's step in ε (dh/dε = −𝓕′(1 + wε²) − w(y − 𝓣)), kept inside the
+  // Newton's step in ε (dh/dε = −𝓕′(1 + wε²) − w(y − 𝓣), over w where w < 1), kept inside the
   // bracket; where it leaves it, or has not halved h since the last sample
   // (far from the root, where h is not near linear), a step that shrinks the
   // bracket instead.  Converged once the error after this step is predicted
@@ -198,8 +207,7 @@ class limit_projector {
     using boost::math::tools::epsilon;
     using std::fabs;
     const slope_estimate d = force_slope_at(a);
-    const Real slope =
-        -(d.slope + product(d.slope, w_, a.eps, a.eps) + product(w_, y_ - a.ft.torque));
+    const Real slope = h_slope(a, d.slope);
     const Real next = a.eps - a.h / slope;
     const bool slow = previous_.eps > 0 && fabs(a.h) > fabs(previous_.h) / 2;
     // An infinite slope or h (wε² or wε(y − 𝓣) beyond the largest value)
