@@ -420,4 +420,22 @@ TEST(LimitSet, RegressionExtremeWeightsAndStarts) {
   EXPECT_NEAR(warm.ratio / cold.ratio, 1, 1e-9);
   EXPECT_NEAR(warm.torque, cold.torque, 1e-12);
 }
+
+TEST(LimitSet, RegressionTinyWeights) {
+  // w = 6.9e-321 (libFuzzer): w(y − 𝓣) in the slope was subnormal and the
+  // search took 200 steps.  The nearest point has 𝓕 = 1 to rounding.
+  const boussinesq<> b;
+  const auto r =
+      project_to_limit_set(b, 1.0, 0.000488281251652677994457, 6.92680035469427654936e-321,
+                           starting_ratio<double>{1.19708502733700794376e+303});
+  EXPECT_FALSE(r.sticking);
+  EXPECT_GE(r.force, 1 - 1e-15);
+  // τ = 3.8e-9, w = 1.6e149 (libFuzzer): the nearest point has 𝓣 = y to
+  // rounding; a start gave ε 1e-11 off (a secant of 𝓕 where 𝓕 = 1 − 1e-7).
+  const elliptic_limit_surface<> e(3.80247673614897198405e-09);
+  const double y = 1.65267799445700822802e-12;
+  const auto warm = project_to_limit_set(e, 1.32446307038503641174, y, 1.55808650294502851528e+149,
+                                         starting_ratio<double>{7.04537610969617571996e-321});
+  EXPECT_NEAR(warm.torque, y, 4 * std::numeric_limits<double>::epsilon() * y);
+}
 }  // namespace
