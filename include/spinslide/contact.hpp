@@ -88,6 +88,10 @@ class contact_law {
   template <class Vec2>
   planar_friction<Vec2, Real> operator()(const Vec2& velocity, Real spin, Real radius,
                                          Real normal_force, Real friction_coefficient) const {
+    static_assert(detail::is_vector<Vec2, 2>(),
+                  "spinslide::contact_law: the velocity must be a 2-component vector class "
+                  "(operator[] or members x, y), not a pointer or a C array: copy a raw array "
+                  "such as MuJoCo's mjtNum* into a std::array<double, 2>");
     const Real vx = static_cast<Real>(detail::get<0>(velocity));
     const Real vy = static_cast<Real>(detail::get<1>(velocity));
     Real fx, fy, t;
@@ -106,6 +110,11 @@ class contact_law {
   spatial_friction<Vec3> operator()(const Vec3& velocity, const Vec3& angular_velocity,
                                     const Vec3& normal, Real radius, Real normal_force,
                                     Real friction_coefficient) const {
+    static_assert(
+        detail::is_vector<Vec3, 3>(),
+        "spinslide::contact_law: the velocity, angular velocity and normal must be "
+        "3-component vector classes (operator[] or members x, y, z), not pointers or "
+        "C arrays: copy a raw array such as MuJoCo's mjtNum* into a std::array<double, 3>");
     const Real n[3] = {static_cast<Real>(detail::get<0>(normal)),
                        static_cast<Real>(detail::get<1>(normal)),
                        static_cast<Real>(detail::get<2>(normal))};

@@ -20,6 +20,33 @@ struct has_subscript : std::false_type {};
 template <class V>
 struct has_subscript<V, std::void_t<decltype(std::declval<V&>()[0])>> : std::true_type {};
 
+template <class V, class = void>
+struct has_members_xy : std::false_type {};
+template <class V>
+struct has_members_xy<V,
+                      std::void_t<decltype(std::declval<V&>().x), decltype(std::declval<V&>().y)>>
+    : std::true_type {};
+template <class V, class = void>
+struct has_member_z : std::false_type {};
+template <class V>
+struct has_member_z<V, std::void_t<decltype(std::declval<V&>().z)>> : std::true_type {};
+
+// True if V is a vector type the contact law can read and return with N
+// components: a class with operator[] or members x, y (and z for N = 3).  A
+// pointer or a C array is not (its size is unknown, and a result cannot be
+// returned in one): the contact law static_asserts this, so that a raw
+// pointer such as MuJoCo's mjtNum* does not compile instead of writing
+// through a null "vector".
+template <class V, int N>
+constexpr bool is_vector() {
+  if constexpr (std::is_pointer<V>::value || std::is_array<V>::value || !std::is_class<V>::value) {
+    return false;
+  } else {
+    return has_subscript<V>::value ||
+           (has_members_xy<V>::value && (N == 2 || has_member_z<V>::value));
+  }
+}
+
 template <int I, class V>
 decltype(auto) component(V& v) {
   if constexpr (has_subscript<V>::value) {
