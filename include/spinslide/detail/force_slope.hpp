@@ -21,9 +21,10 @@ namespace detail {
 template <class P, class = void>
 struct has_member_force_derivative : std::false_type {};
 template <class P>
-struct has_member_force_derivative<P, std::void_t<decltype(std::declval<const P&>().force_derivative(
-                                          std::declval<typename P::value_type>()))>>
-    : std::true_type {};
+struct has_member_force_derivative<P,
+                                   std::void_t<decltype(std::declval<const P&>().force_derivative(
+                                       std::declval<typename P::value_type>()))>> : std::true_type {
+};
 
 /// True if force_slope(p, ε) is the closed-form 𝓕′(ε) of P.
 template <class P>
