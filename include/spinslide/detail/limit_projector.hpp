@@ -95,7 +95,7 @@ class limit_projector {
   struct sample {
     Real eps;  // ε (0 and ∞ at the bracket's initial sides)
     force_torque_result<Real> ft;
-    Real h;  // (x − 𝓕) − wε(y − 𝓣)
+    Real h;  // (x − 𝓕) − wε(y − 𝓣), divided by w where w < 1 (evaluate)
   };
   enum class step_kind { search, converged, edge };
   struct step {
