@@ -18,6 +18,7 @@
 #include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/elastic_closed_forms.hpp>
 #include <spinslide/detail/ring_kernel.hpp>
+#include <spinslide/detail/singular_ratios.hpp>
 #include <spinslide/disk.hpp>
 #include <spinslide/profile_base.hpp>
 #include <spinslide/profile_concept.hpp>
@@ -99,6 +100,13 @@ class annulus : public profile_base<annulus<Real, Policy>, Real, Policy> {
   Real mean_inverse_radius() const { return 2 / (1 + b_); }
   /// ⟨r²⟩ = (1 + b²)/2.
   Real mean_square_radius() const { return (1 + b_ * b_) / 2; }
+  /// The ratios where 𝓕″ and 𝓣″ are singular, b (if > 0) and 1, the edges of
+  /// the support: breakpoints for the stop integrator.
+  detail::ratio_list<Real> singular_ratios() const {
+    detail::ratio_list<Real> r(Real(1));
+    r.add(b_);
+    return r;
+  }
 
  private:
   friend class profile_base<annulus, Real, Policy>;
@@ -223,6 +231,12 @@ class scaled : public profile_base<scaled<Profile>, typename Profile::value_type
   Real mean_inverse_radius() const { return p_.mean_inverse_radius() / a_; }
   /// ⟨r²⟩ = a²⟨r²⟩_P.
   Real mean_square_radius() const { return a_ * a_ * p_.mean_square_radius(); }
+  /// The singular ratios of P times a (𝓕_a(ε) = 𝓕(ε/a)).
+  detail::ratio_list<Real> singular_ratios() const {
+    detail::ratio_list<Real> r;
+    r.add_scaled(detail::singular_ratios(p_), a_);
+    return r;
+  }
 
  private:
   friend class profile_base<scaled, Real, Policy>;
@@ -270,6 +284,17 @@ class weighted_sum
   /// ⟨r²⟩ = Σ wᵢ⟨r²⟩ᵢ.
   Real mean_square_radius() const {
     return sum([](const auto& p) { return p.mean_square_radius(); });
+  }
+  /// The singular ratios of every part with a weight > 0.
+  detail::ratio_list<Real> singular_ratios() const {
+    detail::ratio_list<Real> r;
+    std::size_t i = 0;
+    std::apply(
+        [&](const auto&... part) {
+          ((w_[i++] > 0 ? r.add_scaled(detail::singular_ratios(part), Real(1)) : void()), ...);
+        },
+        parts_);
+    return r;
   }
 
  private:
@@ -366,6 +391,13 @@ class radial_profile : public profile_base<radial_profile<Real, Pressure, Policy
 
   /// b, the inner radius of the support in units of the contact radius.
   Real inner_ratio() const { return inner_; }
+  /// The ratios where 𝓕″ and 𝓣″ are singular, b (if > 0) and 1, the edges of
+  /// the support: breakpoints for the stop integrator.
+  detail::ratio_list<Real> singular_ratios() const {
+    detail::ratio_list<Real> r(Real(1));
+    r.add(inner_);
+    return r;
+  }
   /// ⟨r⟩, by quadrature at construction.
   Real mean_radius() const { return mean_; }
   /// ⟨1/r⟩, by quadrature at construction.

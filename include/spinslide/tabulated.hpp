@@ -12,6 +12,7 @@
 
 #include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/piecewise_chebyshev.hpp>
+#include <spinslide/detail/singular_ratios.hpp>
 #include <spinslide/profile_base.hpp>
 #include <spinslide/profile_concept.hpp>
 
@@ -48,6 +49,8 @@ class tabulated_profile : public profile_base<tabulated_profile<Real, Policy>, R
       : mean_(static_cast<Real>(profile.mean_radius())),
         mean_inverse_(static_cast<Real>(profile.mean_inverse_radius())),
         mean_square_(static_cast<Real>(profile.mean_square_radius())) {
+    const auto edges = detail::singular_ratios(profile);
+    for (std::size_t i = 0; i < edges.size(); ++i) singular_.add(static_cast<Real>(edges[i]));
     static_assert(detail::requires_profile<Profile>());
     const Real tol = detail::checked_constructor_argument<Policy>(
         "spinslide::tabulated_profile<%1%>::tabulated_profile(profile, %1%, max_depth)",
@@ -93,6 +96,11 @@ class tabulated_profile : public profile_base<tabulated_profile<Real, Policy>, R
     return (g.first - s * g.second) * s * s / eps;
   }
 
+  /// The singular ratios of the tabulated profile (its pieces are fine there,
+  /// but the table is smooth only between them): breakpoints for the stop
+  /// integrator.
+  const detail::ratio_list<Real>& singular_ratios() const { return singular_; }
+
   /// The number of Chebyshev pieces.
   std::size_t pieces() const { return table_.size(); }
   /// The deepest bisection level used.
@@ -114,6 +122,7 @@ class tabulated_profile : public profile_base<tabulated_profile<Real, Policy>, R
   }
 
   Real mean_, mean_inverse_, mean_square_;
+  detail::ratio_list<Real> singular_;
   detail::piecewise_chebyshev_pair<Real, degree> table_;
 };
 

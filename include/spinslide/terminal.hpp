@@ -354,25 +354,27 @@ terminal_state<Real> only_zero(const Profile& p, Real gamma,
 }
 
 // The attractor the flow reaches from ε (g(ε) ≠ 0): the first sign change of
-// g in the direction of motion, else 0 or ∞.  The factor-4 bracket from ε is
-// refined where the march finds no other zero between ε and its far end (as
-// before the march existed); else the march's first zero.
+// g in the direction of motion, else 0 or ∞.  The march runs from ε to the far
+// end of the factor-4 bracket that the walk finds (or to the window's end
+// where it finds none) and stops at the first sign change, whose bracket
+// (1/64 wide in ln ε, or less) is refined; the march does not run past that
+// zero, which halves its work (bench_dynamics).  Where the walk's sign
+// change lies within flow_sign's noise level, the march sees none, and the
+// walk's bracket is refined.
 template <class Profile, class Real, class Policy>
 terminal_state<Real> reached_from(const Profile& p, Real gamma, Real eps, const Policy& pol) {
   const bool up = flow_over_ratio(p, eps, gamma) > 0;
-  std::vector<flow_bracket<Real>> found;
   Real lo, hi;
-  if (bracket_next_zero(p, gamma, eps, lo, hi)) {
-    march_flow(p, gamma, eps, up ? hi : lo, false, found);
-    if (found.size() <= 1)
-      return {terminal_regime::sliding_and_spinning, flow_zero(p, gamma, lo, hi, pol)};
-  } else {
-    const auto w = flow_window(p);
-    march_flow(p, gamma, eps, up ? (std::max)(eps, w.second) : (std::min)(eps, w.first), true,
-               found);
-  }
+  const bool walked = bracket_next_zero(p, gamma, eps, lo, hi);
+  const auto w = flow_window(p);
+  const Real end = walked ? (up ? hi : lo)
+                   : up   ? (std::max)(eps, w.second)
+                          : (std::min)(eps, w.first);
+  std::vector<flow_bracket<Real>> found;
+  march_flow(p, gamma, eps, end, true, found);
   if (!found.empty())
     return {terminal_regime::sliding_and_spinning, refine_zero(p, gamma, found.front(), pol)};
+  if (walked) return {terminal_regime::sliding_and_spinning, flow_zero(p, gamma, lo, hi, pol)};
   return up ? terminal_state<Real>{terminal_regime::pure_sliding,
                                    std::numeric_limits<Real>::infinity()}
             : terminal_state<Real>{terminal_regime::pure_spinning, Real(0)};

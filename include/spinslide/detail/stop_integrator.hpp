@@ -15,6 +15,7 @@
 #include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/gauss_panel.hpp>
 #include <spinslide/detail/product.hpp>
+#include <spinslide/detail/singular_ratios.hpp>
 #include <spinslide/motion_types.hpp>
 #include <spinslide/terminal.hpp>
 
@@ -55,8 +56,9 @@ struct stop_limits {
 // motion's distance or angle.  q is monotone, so u, t̂, ŝ and θ̂ are nested
 // integrals over a parameter s of the path q(s): q∞ + Δe^{−s} towards a finite
 // zero q∞ of F (the log makes the approach to the zero regular), q_start ± s
-// towards ±∞.  Panels break at ε = 1 (𝓕″ and 𝓣″ are log-singular there; the
-// panels beside it are graded) and at ε = 10⁸, where the leg hands over to the
+// towards ±∞.  Panels break at the profile's singular ratios (ε = 1, and
+// ε = b for an annulus: 𝓕″ and 𝓣″ are log-singular there, the panels beside
+// them are graded; detail/singular_ratios.hpp) and at ε = 10⁸, where the leg hands over to the
 // other variable.  The rest after the last panel is in closed form where G
 // tends to a finite limit (G is monotone along the path, so the rest lies
 // between e^{−u}G and e^{−u}G∞); towards ε = ∞ in the variable, a bound on the
@@ -72,6 +74,11 @@ class stop_integrator {
     // The right-hand side is evaluated in Real: for float its rounding sets the floor.
     limits_.tolerance = (std::max)(limits_.tolerance,
                                    10 * static_cast<double>(std::numeric_limits<Real>::epsilon()));
+    BOOST_MATH_STD_USING
+    const ratio_list<Real> edges = singular_ratios(p);
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      log_edges_[i] = static_cast<double>(Real(log(edges[i])));
+    edges_ = edges.size();
   }
 
   stop_result<Real> run() {
@@ -119,7 +126,7 @@ class stop_integrator {
   struct panel {
     double s = 0, h = 0;
     bool grade_end = false, grade_start = false, in_u = false;
-    values du{}, dt{}, e2{}, e2_rho{}, dq{};
+    values du, dt, e2, e2_rho, dq;  // every node set by make_panel(_in_u)
     double q_end = 0, err = 0;
   };
 
@@ -261,17 +268,37 @@ class stop_integrator {
     }
   }
 
+  // The breakpoints of the leg: the profile's singular ratios (panels beside
+  // them graded) and the switch of variable at ε = 10⁸.
   void set_breakpoints() {
-    s_one_ = s_flip_ = inf;
-    auto s_at = [&](double qb) {
-      const bool ahead = direction_ * (qb - q_start_) > 0 &&
-                         (!finite_target_ || direction_ * (q_target_ - qb) > 0);
-      if (!ahead) return inf;
-      return finite_target_ ? std::log(delta_ / (qb - q_target_)) : direction_ * (qb - q_start_);
-    };
-    s_one_ = s_at(0);
-    if (direction_ > 0 && !finite_target_) s_flip_ = s_at(q_flip);
-    grade_next_start_ = q_start_ == 0;
+    s_flip_ = direction_ > 0 && !finite_target_ ? s_at(q_flip) : inf;
+    grade_next_start_ = false;
+    for (std::size_t i = 0; i < edges_; ++i) grade_next_start_ |= q_start_ == edge_q(i);
+    find_next_edge();
+  }
+
+  // q of the i-th singular ratio in the leg's variable.
+  double edge_q(std::size_t i) const { return by_speed_ ? -log_edges_[i] : log_edges_[i]; }
+
+  // s where the path reaches q, if it lies ahead of the start and before the
+  // target; else ∞.
+  double s_at(double q) const {
+    const bool ahead =
+        direction_ * (q - q_start_) > 0 && (!finite_target_ || direction_ * (q_target_ - q) > 0);
+    if (!ahead) return inf;
+    return finite_target_ ? std::log(delta_ / (q - q_target_)) : direction_ * (q - q_start_);
+  }
+
+  // The next singular ratio ahead of the position: s_edge_ and q_edge_.
+  void find_next_edge() {
+    s_edge_ = inf;
+    for (std::size_t i = 0; i < edges_; ++i) {
+      const double s = s_at(edge_q(i));
+      if (s > at_.s && s < s_edge_) {
+        s_edge_ = s;
+        q_edge_ = edge_q(i);
+      }
+    }
   }
 
   // ------------------------------------------------------------ the flow
@@ -360,7 +387,7 @@ class stop_integrator {
   // ------------------------------------------------------------ the panels
 
   // The panel [s, s + h], its nodes graded towards a singular end (a cubic
-  // map: the log singularity at ε = 1 becomes (1 − τ)⁶ log(1 − τ)).
+  // map: the log singularity at a singular ratio becomes (1 − τ)⁶ log(1 − τ)).
   panel make_panel(double s, double h, bool grade_start, bool grade_end) const {
     const rule& r = rule::rule();
     panel pn;
@@ -368,7 +395,7 @@ class stop_integrator {
     pn.h = h;
     pn.grade_start = grade_start;
     pn.grade_end = grade_end;
-    values g{}, q{}, log_du{};
+    values g, q, log_du;
     for (std::size_t j = 0; j < n_nodes; ++j) {
       const double sj = s + h * grading(pn, (1 + r.node(j)) / 2);
       const double e = finite_target_ ? delta_ * std::exp(-sj) : 0;  // q − q∞
@@ -455,14 +482,18 @@ class stop_integrator {
     return x > 0 ? -std::log(x) : at_.s;
   }
 
-  // s − s_panel in units of h at τ ∈ [0, 1], and its derivative.
+  // s − s_panel in units of h at τ ∈ [0, 1], and its derivative: cubic
+  // towards one singular end, and 10τ³ − 15τ⁴ + 6τ⁵ (flat to third order at
+  // both) for a panel between two singular ratios.
   static double grading(const panel& pn, double tau) {
-    if (pn.grade_end == pn.grade_start) return tau;
+    if (pn.grade_end && pn.grade_start) return tau * tau * tau * (10 - tau * (15 - 6 * tau));
+    if (!pn.grade_end && !pn.grade_start) return tau;
     const double o = pn.grade_end ? 1 - tau : tau;
     return pn.grade_end ? 1 - o * o * o : o * o * o;
   }
   static double grading_slope(const panel& pn, double tau) {
-    if (pn.grade_end == pn.grade_start) return 1;
+    if (pn.grade_end && pn.grade_start) return 30 * tau * tau * (1 - tau) * (1 - tau);
+    if (!pn.grade_end && !pn.grade_start) return 1;
     const double o = pn.grade_end ? 1 - tau : tau;
     return 3 * o * o;
   }
@@ -502,12 +533,12 @@ class stop_integrator {
     if (std::isfinite(g_target_) ? rest_in_closed_form() : rest_is_negligible())
       return finish_with_rest();
     const bool slow = noise_dominates();
-    const double s_break = (std::min)(s_one_, s_flip_);
+    const double s_break = (std::min)(s_edge_, s_flip_);
     double h = slow ? h_u_ : h_;
     const bool to_break = !slow && at_.s + h >= s_break;
     if (to_break) h = s_break - at_.s;
     const panel pn = slow ? make_panel_in_u(h)
-                          : make_panel(at_.s, h, grade_next_start_, to_break && s_break == s_one_);
+                          : make_panel(at_.s, h, grade_next_start_, to_break && s_break == s_edge_);
     const double tol = limits_.tolerance;
     const double factor = pn.err > 0 ? 0.9 * std::pow(tol / pn.err, 0.125) : 4;
     if (pn.err > tol && h > 1e-9 * (1 + (slow ? at_.u : at_.s))) {
@@ -530,12 +561,12 @@ class stop_integrator {
     at_.plain2 += r.integral(pn.e2);
     at_.rho2 += r.integral(pn.e2_rho);
     grade_next_start_ = pn.grade_end;
-    // At a breakpoint q is exactly 0 or ln 10⁸.
+    // At a breakpoint q is exactly the singular ratio's or ln 10⁸.
     here_ = flow_at_q(pn.in_u            ? pn.q_end
-                      : s_end == s_one_  ? 0.0
+                      : s_end == s_edge_ ? q_edge_
                       : s_end == s_flip_ ? q_flip
                                          : pn.q_end);
-    if (s_end >= s_one_) s_one_ = inf;  // passed
+    if (s_end >= s_edge_) find_next_edge();  // passed
     const motion_sample<Real> now = sample_here();
     sample_times_in(pn, before, now.time);
     observe_(now);
@@ -768,6 +799,8 @@ class stop_integrator {
   Observer observe_;
   stop_request<Real> request_;
   stop_limits limits_;
+  std::array<double, ratio_list<Real>::capacity> log_edges_{};  // ln ε of the singular ratios
+  std::size_t edges_ = 0;
   stop_result<Real> out_{0, 0, 0, {terminal_regime::sliding_and_spinning, Real(0)}};
   std::size_t next_time_ = 0;
 
@@ -777,9 +810,10 @@ class stop_integrator {
   double q_start_ = 0, q_target_ = 0, delta_ = 0, g_target_ = 0;
   int direction_ = 0;
   bool finite_target_ = false;
-  double s_one_ = inf, s_flip_ = inf;  // the breakpoints ε = 1 and ε = 10⁸ along s
-  double rho_log_ = 0;                 // ∫ρe^{−2u}G is in units of e^{rho_log}
-  Real rho_unit_ = 1;                  // e^{rho_log/4}
+  double s_edge_ = inf, q_edge_ = 0;  // the next singular ratio along s, and its q
+  double s_flip_ = inf;               // ε = 10⁸ along s
+  double rho_log_ = 0;                // ∫ρe^{−2u}G is in units of e^{rho_log}
+  Real rho_unit_ = 1;                 // e^{rho_log/4}
 
   // The progress: position, the flow there, the next panel's width.
   position at_{};
