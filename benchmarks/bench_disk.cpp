@@ -27,6 +27,7 @@
 
 #include <spinslide/contact.hpp>
 #include <spinslide/disk.hpp>
+#include <spinslide/impulse_friction.hpp>
 #include <spinslide/limit_set.hpp>
 #include <spinslide/profile.hpp>
 #include <spinslide/tabulated.hpp>
@@ -363,12 +364,75 @@ template <class P>
 void projection_sticking_warm(benchmark::State& s) {
   projection<P>(s, false, true);
 }
+// The impulse law (impulse_friction.hpp) with a coupled inverse mass (a body
+// whose contact point has a lever arm): each input ratio ε gives a slip
+// (ε cos φ, ε sin φ, 1) with φ = ε; a normal impulse of 1e-3 lets every one
+// slip, one of 1e3 stops every one.  Warm: started from the answer's ratio
+// times 1 + 1e-3 (the last step's, in an engine).
+struct impulse_case {
+  std::array<double, 2> v;
+  double spin, start;
+};
+const spinslide::planar_metric<double>& coupled_inverse_mass() {
+  static const spinslide::planar_metric<double> w(
+      {{{2.0, 0.3, 0.2}, {0.3, 1.5, -0.1}, {0.2, -0.1, 3.0}}});
+  return w;
+}
+spinslide::impulse_contact<double> impulse_load(double normal) {
+  return {spinslide::patch_radius<double>{1.0}, spinslide::normal_impulse<double>{normal},
+          spinslide::friction_coefficient<double>{1.0}};
+}
+template <class P>
+const std::vector<impulse_case>& impulse_cases() {
+  static const std::vector<impulse_case> v = [] {
+    std::vector<impulse_case> out;
+    for (double e : inputs<double>()) {
+      impulse_case c{{e * std::cos(e), e * std::sin(e)}, 1.0, 0.0};
+      c.start = spinslide::impulse_friction(projected<P>(), c.v, c.spin, coupled_inverse_mass(),
+                                            impulse_load(1e-3))
+                    .ratio *
+                (1 + 1e-3);
+      out.push_back(c);
+    }
+    return out;
+  }();
+  return v;
+}
+template <class P>
+void impulse(benchmark::State& s, double normal, bool warm) {
+  const auto& cases = impulse_cases<P>();
+  const auto load = impulse_load(normal);
+  for (auto _ : s) {
+    for (const auto& c : cases) {
+      const auto r =
+          spinslide::impulse_friction(projected<P>(), c.v, c.spin, coupled_inverse_mass(), load,
+                                      spinslide::starting_ratio<double>{warm ? c.start : 0.0});
+      benchmark::DoNotOptimize(r);
+    }
+  }
+  s.SetItemsProcessed(s.iterations() * static_cast<int64_t>(cases.size()));
+}
+template <class P>
+void impulse_sliding_warm(benchmark::State& s) {
+  impulse<P>(s, 1e-3, true);
+}
+template <class P>
+void impulse_sliding_cold(benchmark::State& s) {
+  impulse<P>(s, 1e-3, false);
+}
+template <class P>
+void impulse_sticking(benchmark::State& s) {
+  impulse<P>(s, 1e3, false);
+}
 #define SPINSLIDE_BENCH_PROJECTION(P)                  \
   BENCHMARK_TEMPLATE(profile_force_torque, P);         \
   BENCHMARK_TEMPLATE(profile_force_torque_chained, P); \
   BENCHMARK_TEMPLATE(projection_sliding_warm, P);      \
   BENCHMARK_TEMPLATE(projection_sliding_cold, P);      \
-  BENCHMARK_TEMPLATE(projection_sticking_warm, P);
+  BENCHMARK_TEMPLATE(projection_sticking_warm, P);     \
+  BENCHMARK_TEMPLATE(impulse_sliding_warm, P);         \
+  BENCHMARK_TEMPLATE(impulse_sliding_cold, P);         \
+  BENCHMARK_TEMPLATE(impulse_sticking, P);
 SPINSLIDE_BENCH_PROJECTION(spinslide::uniform_disk<>)
 SPINSLIDE_BENCH_PROJECTION(spinslide::hertz<>)
 SPINSLIDE_BENCH_PROJECTION(tabulated_cd)
@@ -434,7 +498,8 @@ int main(int argc, char** argv) {
     const std::string base = std::string("profile_force_torque<") + p + ">";
     const std::string chained = std::string("profile_force_torque_chained<") + p + ">";
     for (const char* kind :
-         {"projection_sliding_warm", "projection_sliding_cold", "projection_sticking_warm"}) {
+         {"projection_sliding_warm", "projection_sliding_cold", "projection_sticking_warm",
+          "impulse_sliding_warm", "impulse_sliding_cold", "impulse_sticking"}) {
       reporter.add_comparison(std::string(kind) + "<" + p + ">", base);
       reporter.add_comparison(std::string(kind) + "<" + p + ">", chained);
     }

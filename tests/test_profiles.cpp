@@ -311,6 +311,16 @@ bool near_a_listed_ratio(const detail::ratio_list<Real>& r, double eps) {
   return false;
 }
 
+// 𝓕″ converges at points away from the listed ratios.
+template <class P, class Real>
+void expect_smooth_between(const P& p, const detail::ratio_list<Real>& r) {
+  for (double e : {0.07, 0.2, 0.3, 0.45, 0.7, 0.9, 1.3, 2.0}) {
+    if (near_a_listed_ratio(r, e)) continue;
+    EXPECT_LT(std::fabs(force_curvature(p, e, 1e-5) - force_curvature(p, e, 1e-3)), 2e-3)
+        << "at " << e;
+  }
+}
+
 // Each listed ratio is singular, and 𝓕″ converges at points between them.
 template <class P>
 void expect_singular_exactly_at(const P& p, const std::vector<double>& expected) {
@@ -321,11 +331,7 @@ void expect_singular_exactly_at(const P& p, const std::vector<double>& expected)
     EXPECT_GT(std::fabs(force_curvature(p, r[i], 1e-5) - force_curvature(p, r[i], 1e-3)), 1.5)
         << "at the listed ratio " << r[i];
   }
-  for (double e : {0.07, 0.2, 0.3, 0.45, 0.7, 0.9, 1.3, 2.0}) {
-    if (near_a_listed_ratio(r, e)) continue;
-    EXPECT_LT(std::fabs(force_curvature(p, e, 1e-5) - force_curvature(p, e, 1e-3)), 2e-3)
-        << "at " << e;
-  }
+  expect_smooth_between(p, r);
 }
 
 TEST(SingularRatios, AreTheEdgesOfTheSupport) {

@@ -21,6 +21,8 @@
 #include <spinslide/approximations.hpp>
 #include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/limit_projector.hpp>
+#include <spinslide/detail/metric_projector.hpp>
+#include <spinslide/planar_metric.hpp>
 #include <spinslide/profile_concept.hpp>
 
 #include <limits>
@@ -43,17 +45,23 @@ struct is_pade_approximation : std::false_type {};
 template <class Real, class Policy>
 struct is_pade_approximation<pade_approximation<Real, Policy>> : std::true_type {};
 
+// What every projection requires of its profile and arguments, at compile time.
 template <class Profile, class Real>
-limit_projection<Real> project_checked(const Profile& profile, Real force, Real torque,
-                                       Real torque_weight, Real start, const char* function) {
+constexpr void require_projectable() {
   static_assert(requires_profile<Profile>());
   static_assert(std::is_same<Real, typename Profile::value_type>::value,
-                "project_to_limit_set: force, torque and torque_weight must have the profile's "
-                "value_type");
+                "project_to_limit_set: the arguments (force, torque and torque_weight, or the "
+                "wrench and the metric) must have the profile's value_type");
   static_assert(!is_pade_approximation<Profile>::value,
                 "project_to_limit_set: the Pade approximants do not obey T' = -eps F' (no pressure "
                 "gives them), so the curve's normal is not (eps, 1) and the projection does not "
                 "apply");
+}
+
+template <class Profile, class Real>
+limit_projection<Real> project_checked(const Profile& profile, Real force, Real torque,
+                                       Real torque_weight, Real start, const char* function) {
+  require_projectable<Profile, Real>();
   using Policy = typename Profile::policy_type;
   const Policy pol;
   const Real f = checked(function, "force", force, argument_rule::finite_non_negative, pol);
@@ -66,6 +74,26 @@ limit_projection<Real> project_checked(const Profile& profile, Real force, Real 
     return {nan, nan, false, nan};
   }
   return limit_projector<Profile>(profile, f, t, w)(s, function);
+}
+
+template <class Profile, class Real>
+wrench_projection<Real> project_wrench_checked(const Profile& profile,
+                                               const tangent_wrench<Real>& point,
+                                               const planar_metric<Real>& metric, Real start,
+                                               const char* function) {
+  require_projectable<Profile, Real>();
+  using Policy = typename Profile::policy_type;
+  const Policy pol;
+  const vector3<Real> z{
+      checked(function, "point.force_x", point.force_x, argument_rule::finite, pol),
+      checked(function, "point.force_y", point.force_y, argument_rule::finite, pol),
+      checked(function, "point.torque", point.torque, argument_rule::finite, pol)};
+  const Real s = checked(function, "starting_ratio", start, argument_rule::non_negative, pol);
+  if (any_reported(z[0], z[1], z[2], s)) {
+    const Real nan = std::numeric_limits<Real>::quiet_NaN();
+    return {{nan, nan, nan}, false, nan};
+  }
+  return metric_projector<Profile>(profile, z, metric.entries(), metric.inverse())(s, function);
 }
 
 }  // namespace detail
@@ -99,6 +127,37 @@ limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, 
   return detail::project_checked(
       profile, force, torque, torque_weight, start.value,
       "spinslide::project_to_limit_set<%1%>(profile, %1%, %1%, %1%, starting_ratio)");
+}
+
+/// The point of the 3-D limit set L₃ = {(f_x, f_y, t) : (|f|, |t|) ∈ L} nearest
+/// to `point` in the metric M = `metric`, (p − point)ᵀM(p − point), for
+/// forces and torques in the limit set's units (F/(μN), T/(μNa)).  Where M
+/// couples the force's direction with the torque (an engine's effective mass
+/// over a body with a lever arm), the answer is no longer a projection of
+/// magnitudes: it is found by Newton's method on the dual, convex problem
+/// (docs/theory.md §11, "Any metric").  Inside L₃: `sticking`, the point
+/// unchanged, `ratio` NaN.  Outside: p on the curve at `ratio` ε, with
+/// M(point − p) along the normal (ε f̂, sign t) (maximum dissipation).  Each
+/// component of `point` finite, else a domain error.  No allocation.
+template <class Profile, class Real>
+wrench_projection<Real> project_to_limit_set(const Profile& profile,
+                                             const tangent_wrench<Real>& point,
+                                             const planar_metric<Real>& metric) {
+  return detail::project_wrench_checked(
+      profile, point, metric, Real(0),
+      "spinslide::project_to_limit_set<%1%>(profile, tangent_wrench, planar_metric)");
+}
+
+/// As above, searching from `start` (the last step's ratio).
+template <class Profile, class Real>
+wrench_projection<Real> project_to_limit_set(const Profile& profile,
+                                             const tangent_wrench<Real>& point,
+                                             const planar_metric<Real>& metric,
+                                             starting_ratio<Real> start) {
+  return detail::project_wrench_checked(
+      profile, point, metric, start.value,
+      "spinslide::project_to_limit_set<%1%>(profile, tangent_wrench, planar_metric, "
+      "starting_ratio)");
 }
 
 }  // namespace spinslide

@@ -1,0 +1,288 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+// The point of the 3-D limit set L₃ = {(f, t) ∈ ℝ²×ℝ : (|f|, |t|) ∈ L} nearest
+// to z in a metric M, (p − z)ᵀM(p − z) (docs/theory.md §11, "Any metric").
+//
+// Outside L₃ the nearest point p and the slip s = M(z − p) satisfy p = ∇D(s),
+// with D(s) = |s_f|𝓕(ε) + |s_t|𝓣(ε), ε = |s_f|/|s_t|, the dissipation
+// function of the contact (1-homogeneous and convex; ∇D is the friction law,
+// (𝓕 s_f/|s_f|, 𝓣 sign s_t)).  So s is the minimum of the strictly convex
+//   Ψ(s) = ½ sᵀM⁻¹s + D(s) − zᵀs,
+// found by Newton's method with a backtracking line search.  Whatever the
+// iteration's error, ∇D(s) lies on the curve (to the profile's rounding) with
+// s along its normal (ε d, sign s_t): only nearness is iterated.  Inside L₃
+// (decided on the magnitudes by the 2-D projection) s = 0: sticking.
+#ifndef SPINSLIDE_DETAIL_METRIC_PROJECTOR_HPP
+#define SPINSLIDE_DETAIL_METRIC_PROJECTOR_HPP
+
+#include <spinslide/detail/force_slope.hpp>
+#include <spinslide/detail/limit_projector.hpp>
+#include <spinslide/detail/matrix3.hpp>
+#include <spinslide/planar_metric.hpp>
+
+#include <boost/math/policies/error_handling.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace spinslide {
+
+/// The point of a profile's limit set nearest to a tangent wrench in a
+/// planar_metric (project_to_limit_set, limit_set.hpp).
+template <class Real>
+struct wrench_projection {
+  tangent_wrench<Real> point;  ///< the nearest point of L₃ (in the limit set's units)
+  bool sticking;               ///< true if the given wrench lies in L₃ (then returned unchanged)
+  Real ratio;                  ///< ε of the curve point (NaN if sticking)
+};
+
+namespace detail {
+
+template <class Profile>
+class metric_projector {
+  using Real = typename Profile::value_type;
+  using vec = vector3<Real>;
+
+ public:
+  // z finite (checked by the caller); `metric` M and `inverse` M⁻¹, symmetric
+  // positive definite (a planar_metric's, or derived from one).
+  metric_projector(const Profile& profile, const vec& z, const matrix3<Real>& metric,
+                   const matrix3<Real>& inverse)
+      : p_(profile), z_(z), m_(metric), inverse_(inverse) {}
+
+  // The projection; `start`: a ratio to search from (0 or ∞: none).
+  wrench_projection<Real> operator()(Real start, const char* function) {
+    // With a start: if z lies beyond the support plane of L₃ with the normal
+    // n at the start's curve point (zᵀn > D(n) = max over L₃ of pᵀn), z is
+    // outside and n a descent direction: Newton from there, one evaluation.
+    if (start > 0 && start < std::numeric_limits<Real>::infinity()) {
+      const ray r = normal_ray(start, p_.force_torque(start));
+      if (r.gain > 0) return descend(r, function);
+    }
+    // Otherwise the 2-D projection decides sticking on the magnitudes and
+    // gives the curve point, along z's direction, to start from.
+    const limit_projection<Real> flat = limit_projector<Profile>(
+        p_, length(z_[0], z_[1]), std::fabs(z_[2]), torque_weight())(start, function);
+    if (flat.sticking) return {{z_[0], z_[1], z_[2]}, true, std::numeric_limits<Real>::quiet_NaN()};
+    const ray r = normal_ray(flat.ratio, {flat.force, flat.torque});
+    if (r.gain > 0) return descend(r, function);
+    // No gain (z outside L₃ only by rounding): the 2-D answer itself.
+    return result_on_ray(r, {flat.force, flat.torque}, flat.ratio);
+  }
+
+ private:
+  // The outward normal n at the curve point of ratio ε along z's force
+  // direction and torque sign (scaled to a largest component of 1), and the
+  // gain zᵀn − D(n): positive when z lies beyond that point's support plane.
+  struct ray {
+    vec n;
+    Real gain;
+    Real dx, dy;  // z's force direction (1, 0 if z has no force)
+  };
+  ray normal_ray(Real eps, const force_torque_result<Real>& c) const {
+    const Real zf = length(z_[0], z_[1]);
+    const bool wide = eps > 1;
+    const Real nf = wide ? Real(1) : eps, nt = wide ? Real(1 / eps) : Real(1);
+    ray r;
+    r.dx = zf > 0 ? Real(z_[0] / zf) : Real(1);
+    r.dy = zf > 0 ? Real(z_[1] / zf) : Real(0);
+    r.n = {nf * r.dx, nf * r.dy, z_[2] < 0 ? Real(-nt) : nt};
+    r.gain = dot(z_, r.n) - (nf * c.force + nt * c.torque);
+    return r;
+  }
+
+  // Newton from the best point of the ray: Ψ(τn) = ½τ²nᵀM⁻¹n − τ·gain is
+  // least at τ = gain/(nᵀM⁻¹n) > 0, where Ψ < 0.  Every later iterate keeps
+  // Ψ below that, away from the kink at s = 0, where a start in a poor
+  // direction (an ill-conditioned M) would make the iteration collapse.
+  wrench_projection<Real> descend(const ray& r, const char* function) const {
+    const Real tau = r.gain / dot(r.n, multiply(inverse_, r.n));
+    return newton(point({tau * r.n[0], tau * r.n[1], tau * r.n[2]}), function);
+  }
+
+  wrench_projection<Real> result_on_ray(const ray& r, const force_torque_result<Real>& c,
+                                        Real eps) const {
+    return {{c.force * r.dx, c.force * r.dy, z_[2] < 0 ? Real(-c.torque) : c.torque}, false, eps};
+  }
+
+  // Ψ, ∇D and what the Hessian needs at one s.
+  struct point_data {
+    vec s;
+    Real along = 0, across = 0;  // |s_f| and |s_t|
+    Real eps = 0;
+    force_torque_result<Real> ft{0, 0};
+    vec grad_d{};  // ∇D(s): the point of the curve
+    Real psi = 0;
+    Real psi_scale = 0;  // the sum of |Ψ|'s terms: its rounding is a few ulp of it
+  };
+
+  // The torque's weight relative to the force's for the 2-D start and test
+  // (which one only changes the start: stick or slip does not depend on it).
+  Real torque_weight() const {
+    const auto& m = m_;
+    const Real w = 2 * m[2][2] / (m[0][0] + m[1][1]);
+    return std::isfinite(w) && w > 0 ? w : Real(1);
+  }
+
+  point_data point(const vec& s) const {
+    point_data d;
+    d.s = s;
+    d.along = length(s[0], s[1]);
+    d.across = std::fabs(s[2]);
+    d.eps = d.across > 0 ? Real(d.along / d.across) : std::numeric_limits<Real>::infinity();
+    if (d.along == 0) d.eps = 0;
+    d.ft = p_.force_torque(d.eps);
+    const Real unit = d.along > 0 ? Real(d.ft.force / d.along) : Real(0);
+    d.grad_d = {s[0] * unit, s[1] * unit,
+                s[2] > 0   ? d.ft.torque
+                : s[2] < 0 ? Real(-d.ft.torque)
+                           : Real(0)};
+    const vec ms = multiply(inverse_, s);
+    const Real quadratic = dot(s, ms) / 2,
+               dissipation = d.along * d.ft.force + d.across * d.ft.torque;
+    const Real linear = dot(z_, s);
+    d.psi = quadratic + dissipation - linear;
+    d.psi_scale = std::fabs(quadratic) + dissipation + std::fabs(linear);
+    return d;
+  }
+
+  // 𝓕′(ε), closed form where the profile has one, else a forward difference
+  // (in 𝓣 through 𝓣′ = −ε𝓕′ where 𝓕 > 1/2): Newton needs only an
+  // approximate Hessian, the gradient is exact.
+  Real slope(const point_data& d) const {
+    if constexpr (has_force_slope<Profile>()) {
+      return force_slope(p_, d.eps);
+    } else {
+      const Real step = d.eps * Real(1.0 / 67108864);  // 2⁻²⁶
+      const auto next = p_.force_torque(d.eps + step);
+      return d.ft.force <= Real(0.5) ? Real((next.force - d.ft.force) / step)
+                                     : Real((d.ft.torque - next.torque) / (step * d.eps));
+    }
+  }
+
+  // The Hessian of D, rank two: (𝓕′ε/|s_f|) u uᵀ + (𝓕/|s_f|)(I − ddᵀ) on the
+  // force block, u = (d, −ε sign s_t); in 1/|s_t| form where ε ≤ 1 (finite
+  // at ε = 0: ⟨1/r⟩/2 I), and its ε = ∞ limit (⟨r²⟩/2 for the torque).
+  matrix3<Real> hessian_of_d(const point_data& d) const {
+    matrix3<Real> h{};
+    const Real sign = d.s[2] < 0 ? Real(-1) : Real(1);
+    const Real dx = d.along > 0 ? Real(d.s[0] / d.along) : Real(1);
+    const Real dy = d.along > 0 ? Real(d.s[1] / d.along) : Real(0);
+    Real a = 0, b = 0, c = 0, q = 0, scale = 1;  // u uᵀ weights, and the (I − ddᵀ) weight
+    if (d.eps == 0) {
+      a = q = p_.mean_inverse_radius() / 2;  // 𝓕′(0) = 𝓕/ε at 0
+      scale = 1 / d.across;
+    } else if (!(d.eps < std::numeric_limits<Real>::infinity())) {
+      q = 1;
+      c = p_.mean_square_radius() / 2;  // ε³𝓕′ → ⟨r²⟩/2
+      scale = 1 / d.along;
+    } else {
+      const Real fp = slope(d);
+      const bool small = d.eps <= 1;
+      // 1/|s_t| form: 𝓕′ ddᵀ + (𝓕/ε)(I − ddᵀ), −𝓕′ε σd, 𝓕′ε²; 1/|s_f| form: times ε.
+      a = small ? fp : fp * d.eps;
+      b = small ? fp * d.eps : fp * d.eps * d.eps;
+      c = small ? fp * d.eps * d.eps : fp * d.eps * d.eps * d.eps;
+      q = small ? Real(d.ft.force / d.eps) : d.ft.force;
+      scale = small ? 1 / d.across : 1 / d.along;
+    }
+    if (!std::isfinite(a)) a = 0;  // ⟨1/r⟩ = ∞: left to the line search
+    const Real dd[2] = {dx, dy};
+    for (std::size_t i = 0; i < 2; ++i) {
+      for (std::size_t j = 0; j < 2; ++j)
+        h[i][j] = scale * ((a - q) * dd[i] * dd[j] + (i == j ? q : Real(0)));
+      h[i][2] = h[2][i] = -scale * b * sign * dd[i];
+    }
+    h[2][2] = scale * c;
+    return h;
+  }
+
+  // Newton's method on Ψ from s: the step solves (M⁻¹ + ∇²D)δ = −∇Ψ, halved
+  // while it does not lower Ψ by 10⁻⁴ of its promise (beyond Ψ's rounding,
+  // so that near the minimum the full step is taken).  Converged when the
+  // step is below 4 ulp of s, or when, below √ε_mach of s, a step did not
+  // shrink to half the last full one (there Newton's steps shrink
+  // quadratically, with an approximate slope at least linearly: this is the
+  // rounding floor of ∇Ψ, a difference of terms of the size of z).
+  wrench_projection<Real> newton(point_data x, const char* function) const {
+    using std::sqrt;
+    const Real tiny = 4 * std::numeric_limits<Real>::epsilon();
+    const Real near = sqrt(std::numeric_limits<Real>::epsilon());
+    Real last_full = std::numeric_limits<Real>::infinity();
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      vec g{};
+      const vec step = newton_step(x, g);
+      const Real move = largest(step), size = largest(x.s);
+      if (move <= tiny * size || (move <= near * size && move > last_full / 2)) return result(x);
+      Real t = 1;
+      const point_data y = line_search(x, step, dot(g, step), t);
+      if (t == 0) return result(x);  // Ψ cannot be lowered further in this type
+      last_full = t == 1 ? move : std::numeric_limits<Real>::infinity();
+      x = y;
+    }
+    const Real bad = boost::math::policies::raise_evaluation_error<Real>(
+        function, "The metric projection did not converge (last ratio %1%).", x.eps,
+        typename Profile::policy_type());
+    return {{bad, bad, bad}, false, bad};
+  }
+
+  // δ = −(M⁻¹ + ∇²D)⁻¹∇Ψ, and ∇Ψ = M⁻¹s + ∇D − z in `g`.
+  vec newton_step(const point_data& x, vec& g) const {
+    const vec ms = multiply(inverse_, x.s);
+    for (std::size_t i = 0; i < 3; ++i) g[i] = ms[i] + x.grad_d[i] - z_[i];
+    matrix3<Real> h = hessian_of_d(x);
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) h[i][j] += inverse_[i][j];
+    vec step{};
+    if (!solve_symmetric(h, g, step)) solve_symmetric(inverse_, g, step);  // ∇²D not finite
+    for (Real& v : step) v = -v;
+    return step;
+  }
+
+  // The first of s + tδ, t = 1, 1/2, ..., that lowers Ψ by 10⁻⁴ of the
+  // promise t∇Ψ·δ, give or take Ψ's rounding; t = 0 and s itself once the
+  // step is below rounding.
+  point_data line_search(const point_data& x, const vec& step, Real promise, Real& t) const {
+    const Real floor = 4 * std::numeric_limits<Real>::epsilon();
+    for (t = 1; t * largest(step) > floor * largest(x.s); t /= 2) {
+      point_data y = point(shifted(x.s, step, t));
+      const Real slack = floor * (x.psi_scale + y.psi_scale);
+      if (y.psi <= x.psi + Real(1e-4) * t * promise + slack) return y;
+    }
+    t = 0;
+    return x;
+  }
+
+  // √(x² + y²), by hypot only where the squares could over- or underflow.
+  static Real length(Real x, Real y) {
+    using std::hypot;
+    using std::sqrt;
+    const Real big = (std::max)(std::fabs(x), std::fabs(y));
+    return big > Real(1e-140) && big < Real(1e140) ? Real(sqrt(x * x + y * y)) : Real(hypot(x, y));
+  }
+
+  static Real largest(const vec& v) {
+    return (std::max)({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])});
+  }
+
+  static vec shifted(const vec& s, const vec& step, Real t) {
+    return {s[0] + t * step[0], s[1] + t * step[1], s[2] + t * step[2]};
+  }
+
+  static wrench_projection<Real> result(const point_data& d) {
+    return {{d.grad_d[0], d.grad_d[1], d.grad_d[2]}, false, d.eps};
+  }
+
+  const Profile& p_;
+  vec z_;
+  const matrix3<Real>& m_;
+  const matrix3<Real>& inverse_;
+};
+
+}  // namespace detail
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_DETAIL_METRIC_PROJECTOR_HPP

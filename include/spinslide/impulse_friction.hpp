@@ -1,0 +1,124 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file impulse_friction.hpp
+/// Velocity-level (impulse) friction for one contact over one time step:
+/// exact stick, and slip on the coupled limit set by maximum dissipation
+/// (docs/contact.md, "The impulse law"; docs/theory.md §11).
+///
+/// Given the contact's relative sliding velocity v and spin ω before
+/// friction, and its effective inverse mass W over (v_x, v_y, ω) (the
+/// velocity change per unit impulse: the Delassus operator restricted to
+/// those directions), the friction impulse P = (P_x, P_y, L) is the one that
+/// leaves the least kinetic energy of the relative motion,
+///   P = argmin ½ (s + WP)ᵀ W⁻¹ (s + WP) over μΛ·{(f, a t) : (f, t) ∈ L₃},
+/// Λ the normal impulse.  If the impulse that stops the contact,
+/// −W⁻¹(v, ω), lies in that set, it is the answer (exact stick: no creep, no
+/// velocity scale).  Otherwise P lies on the set's boundary with the
+/// velocity after it, (v⁺, ω⁺) = (v, ω) + WP, along the outward normal:
+/// P = −μΛ(𝓕(ε) v⁺/|v⁺|, a𝓣(ε) sign ω⁺) with ε = |v⁺|/(a|ω⁺|), the exact
+/// Contensou law at the end of the step (an implicit step, which tends to
+/// the exact motion as the step shrinks; tests/test_impulse_friction.cpp).
+
+#ifndef SPINSLIDE_IMPULSE_FRICTION_HPP
+#define SPINSLIDE_IMPULSE_FRICTION_HPP
+
+#include <spinslide/contact_inputs.hpp>
+#include <spinslide/detail/checks.hpp>
+#include <spinslide/detail/vector_access.hpp>
+#include <spinslide/limit_set.hpp>
+#include <spinslide/planar_metric.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace spinslide {
+
+/// The friction impulse of one contact over one step.
+template <class Vec2, class Real>
+struct friction_impulse {
+  Vec2 linear;    ///< (P_x, P_y), on the body whose relative motion was given
+  Real angular;   ///< L, about the normal
+  bool sticking;  ///< true: the impulse stops the contact exactly
+  Real ratio;     ///< ε = |v⁺|/(a|ω⁺|) after the step (NaN if sticking)
+};
+
+/// The friction impulse for one contact over one step (see the file's
+/// comment).  `velocity`: the relative sliding velocity before friction (a
+/// 2-component vector class, in the tangent plane's axes); `spin`: the
+/// relative angular velocity about the normal; `inverse_mass`: W over
+/// (v_x, v_y, ω), in the same axes; `contact`: a, Λ and μ.  Components
+/// finite, a > 0, Λ ≥ 0 and μ ≥ 0, all of the profile's value_type;
+/// otherwise a domain error.  `start`: the contact's ratio at the last step,
+/// where known (0: none); it only speeds the search.  No allocation: two 3×3
+/// factorizations and, when it slips, a few evaluations of the profile.
+template <class Profile, class Vec2>
+friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
+    const Profile& profile, const Vec2& velocity, typename Profile::value_type spin,
+    const planar_metric<typename Profile::value_type>& inverse_mass,
+    const impulse_contact<typename Profile::value_type>& contact,
+    starting_ratio<typename Profile::value_type> start = {0}) {
+  using Real = typename Profile::value_type;
+  detail::require_projectable<Profile, Real>();
+  static_assert(detail::is_vector<Vec2, 2>(),
+                "spinslide::impulse_friction: the velocity must be a 2-component vector class "
+                "(operator[] or members x, y), not a pointer or a C array: copy a raw array "
+                "such as MuJoCo's mjtNum* into a std::array<double, 2>");
+  static const char* function =
+      "spinslide::impulse_friction<%1%>(profile, velocity, %1%, inverse_mass, contact)";
+  using detail::argument_rule;
+  using detail::checked;
+  const typename Profile::policy_type pol;
+  const Real vx = checked(function, "velocity[0]", static_cast<Real>(detail::get<0>(velocity)),
+                          argument_rule::finite, pol);
+  const Real vy = checked(function, "velocity[1]", static_cast<Real>(detail::get<1>(velocity)),
+                          argument_rule::finite, pol);
+  const Real w = checked(function, "spin", spin, argument_rule::finite, pol);
+  const Real a = checked(function, "contact.radius", contact.radius.value,
+                         argument_rule::finite_positive, pol);
+  const Real n = checked(function, "contact.normal", contact.normal.value,
+                         argument_rule::finite_non_negative, pol);
+  const Real mu = checked(function, "contact.friction", contact.friction.value,
+                          argument_rule::finite_non_negative, pol);
+  const Real s0 = checked(function, "start", start.value, argument_rule::non_negative, pol);
+  friction_impulse<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN()};
+  if (detail::any_reported(vx, vy, w, a, n, mu, s0)) {
+    detail::set<0>(out.linear, out.ratio);
+    detail::set<1>(out.linear, out.ratio);
+    out.angular = out.ratio;
+    return out;
+  }
+  // The impulse that stops the contact, z = −W⁻¹s, and the set μΛ·S·L₃ with
+  // S = diag(1, 1, a): in the limit set's units ẑ = S⁻¹z/(μΛ), in the metric
+  // SWS (inverse S⁻¹W⁻¹S⁻¹), both positive definite since W is.
+  const detail::vector3<Real> slip{vx, vy, w};
+  detail::vector3<Real> stop = detail::multiply(inverse_mass.inverse(), slip);
+  for (Real& x : stop) x = -x;
+  const Real load = mu * n;
+  if (load == 0 || (vx == 0 && vy == 0 && w == 0)) {
+    out.sticking = vx == 0 && vy == 0 && w == 0;
+    if (!out.sticking) out.ratio = std::hypot(vx, vy) / (a * std::fabs(w));
+    return out;
+  }
+  const Real scale[3] = {1, 1, a};
+  detail::matrix3<Real> metric{}, inverse{};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) {
+      metric[i][j] = scale[i] * inverse_mass.entries()[i][j] * scale[j];
+      inverse[i][j] = inverse_mass.inverse()[i][j] / (scale[i] * scale[j]);
+    }
+  const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / (load * a)};
+  const wrench_projection<Real> r =
+      detail::metric_projector<Profile>(profile, target, metric, inverse)(s0, function);
+  out.sticking = r.sticking;
+  out.ratio = r.ratio;
+  detail::set<0>(out.linear, r.sticking ? stop[0] : Real(load * r.point.force_x));
+  detail::set<1>(out.linear, r.sticking ? stop[1] : Real(load * r.point.force_y));
+  out.angular = r.sticking ? stop[2] : Real(load * a * r.point.torque);
+  return out;
+}
+
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_IMPULSE_FRICTION_HPP

@@ -1,0 +1,235 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+// The velocity-level (impulse) friction law (impulse_friction.hpp), against
+// independent results: the exact throw (simulate_throw, itself held to the
+// 100-digit throw reference) as the step shrinks; exact stick of a block on
+// a slope below the friction angle, and the exact sliding acceleration above
+// it; and, for coupled inverse masses, the conditions that define the law
+// (the impulse on the limit surface at the post-step ratio, against the
+// post-step slip, or the contact stopped exactly).
+
+#include <gtest/gtest.h>
+
+#include <spinslide/impulse_friction.hpp>
+#include <spinslide/spinslide.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include "random_metric.hpp"
+
+namespace {
+
+using namespace spinslide;
+using vec2 = std::array<double, 2>;
+using matrix = planar_metric<double>::matrix;
+
+impulse_contact<double> contact(double radius, double normal, double mu) {
+  return {patch_radius<double>{radius}, normal_impulse<double>{normal},
+          friction_coefficient<double>{mu}};
+}
+
+// A throw of the paper's disk in its dimensionless units (R = μ = g = m = 1,
+// I = γ) stepped with the impulse law: each step the normal impulse is Δt,
+// the friction impulse changes (v, ω) by (P, L/γ), and the position and
+// angle advance with the velocities after it (an implicit step).
+struct stepped_throw {
+  double stop_time = 0;  // the end of the first step after which v = ω = 0
+  double distance = 0, angle = 0;
+  double probe_time = 0, probe_ratio = 0;  // ε after the first step ending at or after the probe
+  bool stayed_at_rest = true;
+  double rest_speed = 0;  // the largest |v| + |ω| after the stop (rounding)
+  double drift = 0;       // the distance moved in 1000 steps after it
+};
+
+stepped_throw step_throw(double gamma, double v0, double w0, double dt, double probe) {
+  const uniform_disk<> disk;
+  const planar_metric<double> inverse_mass(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1 / gamma}}});
+  stepped_throw out;
+  vec2 v{v0, 0};
+  double w = w0, t = 0, last = 0;
+  const auto c = contact(1, dt, 1);
+  bool stopped = false;
+  for (long k = 0; k < 100000000 && !stopped; ++k) {
+    const auto p = impulse_friction(disk, v, w, inverse_mass, c, starting_ratio<double>{last});
+    v = {v[0] + p.linear[0], v[1] + p.linear[1]};
+    w += p.angular / gamma;
+    t += dt;
+    out.distance += std::hypot(v[0], v[1]) * dt;
+    out.angle += std::fabs(w) * dt;
+    if (p.sticking) {
+      stopped = true;
+      out.stop_time = t;
+    } else {
+      last = p.ratio;
+    }
+    if (out.probe_time == 0 && t >= probe) {
+      out.probe_time = t;
+      out.probe_ratio = std::hypot(v[0], v[1]) / w;
+    }
+  }
+  for (int k = 0; k < 1000; ++k) {  // at rest it stays: no creep, no chatter
+    const auto p = impulse_friction(disk, v, w, inverse_mass, c);
+    v = {v[0] + p.linear[0], v[1] + p.linear[1]};
+    w += p.angular / gamma;
+    out.stayed_at_rest = out.stayed_at_rest && p.sticking;
+    out.rest_speed = std::max(out.rest_speed, std::hypot(v[0], v[1]) + std::fabs(w));
+    out.drift += std::hypot(v[0], v[1]) * dt;
+  }
+  return out;
+}
+
+TEST(ImpulseFriction, ThrowConvergesToTheExactStopAsTheStepShrinks) {
+  const uniform_disk<> disk;
+  const double gamma = 0.5;
+  for (const auto& start : std::vector<vec2>{{1, 1}, {1, 0.1}, {0.1, 1}, {2, 3}}) {
+    const auto exact = simulate_throw(disk, gamma, start[0], start[1]);
+    std::vector<double> time_errors, distance_errors, ratio_errors;
+    for (double steps : {100.0, 1000.0, 10000.0}) {
+      const double dt = exact.time / steps;
+      // The ratio where the motion is nearly spent (ε near ε₀), at 0.95 t*.
+      const stepped_throw s = step_throw(gamma, start[0], start[1], dt, 0.95 * exact.time);
+      const std::vector<double> at{s.probe_time};
+      const double ratio = trajectory(disk, gamma, start[0], start[1], at).at(0).ratio;
+      ratio_errors.push_back(std::fabs(s.probe_ratio / ratio - 1));
+      time_errors.push_back(std::fabs(s.stop_time - exact.time) / exact.time);
+      distance_errors.push_back(std::fabs(s.distance - exact.distance) / exact.distance);
+      EXPECT_TRUE(s.stayed_at_rest) << "v0 = " << start[0] << ", w0 = " << start[1];
+      EXPECT_LE(s.rest_speed, 1e-15 * (start[0] + start[1]));
+      EXPECT_LE(s.drift, 1e-15 * exact.distance);
+      std::printf(
+          "v0 %g w0 %g, %g steps: relative errors: stop %.1e, distance %.1e, ratio at 0.95 t* "
+          "%.1e\n",
+          start[0], start[1], steps, time_errors.back(), distance_errors.back(),
+          ratio_errors.back());
+    }
+    // The stop falls on a step's end, within a step of the exact one; the
+    // distance is first order in the step: each tenfold refinement gains
+    // about tenfold.
+    for (std::size_t i = 0; i < time_errors.size(); ++i) {
+      EXPECT_LE(time_errors[i], 1.0 / std::pow(10.0, 2.0 + static_cast<double>(i)))
+          << "v0 = " << start[0] << ", w0 = " << start[1] << ", refinement " << i;
+      EXPECT_LE(distance_errors[i], 3.0 / std::pow(10.0, 2.0 + static_cast<double>(i)))
+          << "v0 = " << start[0] << ", w0 = " << start[1] << ", refinement " << i;
+    }
+    EXPECT_LE(distance_errors.back(), distance_errors.front() / 30);
+    EXPECT_LE(ratio_errors.back(), ratio_errors.front() / 30);
+    EXPECT_LE(ratio_errors.back(), 1e-2);
+  }
+}
+
+// A block (a uniform flat patch of radius 5 cm, 2 kg, μ = 0.3) on a slope,
+// stepped at Δt = 1 ms for 10 s with gravity along the slope and the impulse
+// law: below the friction angle it does not move (the regularized law creeps
+// at v_s·F/(μN), 2.9 mm/s for v_s = 2μgΔt); above it, it slides with the
+// exact acceleration g(sin α − μ cos α) (pure sliding: 𝓕 = 1).
+TEST(ImpulseFriction, BlockOnASlopeSticksExactlyAndSlidesExactly) {
+  const uniform_disk<> patch;
+  const double mass = 2, radius = 0.05, mu = 0.3, g = 9.81, dt = 1e-3;
+  const double inertia = mass * radius * radius / 2;
+  const planar_metric<double> inverse_mass(
+      matrix{{{1 / mass, 0, 0}, {0, 1 / mass, 0}, {0, 0, 1 / inertia}}});
+  for (double slope : {0.15, 0.299, 0.31}) {
+    const double alpha = std::atan(slope);
+    vec2 v{0, 0};
+    double x = 0, w = 0;
+    const auto c = contact(radius, mass * g * std::cos(alpha) * dt, mu);
+    for (int k = 0; k < 10000; ++k) {
+      v[0] += g * std::sin(alpha) * dt;
+      const auto p = impulse_friction(patch, v, w, inverse_mass, c);
+      v = {v[0] + p.linear[0] / mass, v[1] + p.linear[1] / mass};
+      w += p.angular / inertia;
+      x += v[0] * dt;
+    }
+    if (slope < mu) {
+      EXPECT_LT(std::fabs(x), 1e-9) << "slope " << slope;
+      EXPECT_EQ(w, 0);
+    } else {
+      const double a = g * (std::sin(alpha) - mu * std::cos(alpha));
+      EXPECT_NEAR(v[0], a * 10, 1e-12 * a * 10) << "slope " << slope;
+      EXPECT_NEAR(x, a * dt * dt * 10000.0 * 10001.0 / 2, 1e-10 * x);
+      EXPECT_EQ(w, 0);
+    }
+  }
+}
+
+matrix random_inverse_mass(std::mt19937_64& rng) {
+  return spinslide_test::random_spd(rng, 0.01, 0);
+}
+
+// The law's defining conditions for a coupled W (a body whose contact point
+// has a lever arm): stick stops the contact; slip puts the impulse on the
+// limit surface at the post-step ratio, against the post-step slip.
+TEST(ImpulseFriction, CoupledInverseMassSticksOrSlipsByMaximumDissipation) {
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> u(-1, 1), lg(-2, 1);
+  const hertz<> sphere;
+  int sticks = 0, slips = 0;
+  for (int n = 0; n < 3000; ++n) {
+    const matrix m = random_inverse_mass(rng);
+    const planar_metric<double> inverse_mass(m);
+    const vec2 v{u(rng), u(rng)};
+    const double w = u(rng), a = 0.05 + 0.45 * std::fabs(u(rng)), load = std::exp(4 * u(rng));
+    const auto c = contact(a, load, 0.5);
+    const auto p = impulse_friction(sphere, v, w, inverse_mass, c);
+    const double imp[3] = {p.linear[0], p.linear[1], p.angular};
+    const double before[3] = {v[0], v[1], w};
+    double after[3];
+    for (std::size_t i = 0; i < 3; ++i)
+      after[i] = before[i] + m[i][0] * imp[0] + m[i][1] * imp[1] + m[i][2] * imp[2];
+    const double scale = std::fabs(before[0]) + std::fabs(before[1]) + std::fabs(before[2]);
+    if (p.sticking) {
+      ++sticks;
+      for (double x : after) EXPECT_NEAR(x, 0, 1e-13 * scale);
+      continue;
+    }
+    ++slips;
+    const double speed = std::hypot(after[0], after[1]);
+    const double ratio = speed / (a * std::fabs(after[2]));
+    EXPECT_NEAR(p.ratio / ratio, 1, 1e-9) << "the ratio is the post-step slip's";
+    const auto ft = sphere.force_torque(p.ratio);
+    const double mu_load = 0.5 * load;
+    EXPECT_NEAR(std::hypot(imp[0], imp[1]), mu_load * ft.force, 1e-12 * mu_load);
+    EXPECT_NEAR(std::fabs(imp[2]), mu_load * a * ft.torque, 1e-12 * mu_load * a);
+    // Against the slip: P_f = −|P_f| v⁺/|v⁺| and L opposite to ω⁺.
+    EXPECT_NEAR(imp[0] * speed + std::hypot(imp[0], imp[1]) * after[0], 0, 1e-9 * mu_load * speed);
+    EXPECT_NEAR(imp[1] * speed + std::hypot(imp[0], imp[1]) * after[1], 0, 1e-9 * mu_load * speed);
+    EXPECT_LE(imp[2] * after[2], 0);
+  }
+  EXPECT_GE(sticks, 100);
+  EXPECT_GE(slips, 100);
+}
+
+TEST(ImpulseFriction, NoLoadNoFrictionAndBadInput) {
+  const uniform_disk<> disk;
+  const planar_metric<double> identity(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
+  const auto free = impulse_friction(disk, vec2{0.3, 0}, 1.0, identity, contact(1, 0, 0.5));
+  EXPECT_FALSE(free.sticking);
+  EXPECT_EQ(free.linear[0], 0);
+  EXPECT_EQ(free.angular, 0);
+  EXPECT_DOUBLE_EQ(free.ratio, 0.3);
+  const auto rest = impulse_friction(disk, vec2{0, 0}, 0.0, identity, contact(1, 1, 0.5));
+  EXPECT_TRUE(rest.sticking);
+  EXPECT_EQ(rest.linear[0], 0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(impulse_friction(disk, vec2{nan, 0}, 1.0, identity, contact(1, 1, 0.5)),
+               std::domain_error);
+  EXPECT_THROW(impulse_friction(disk, vec2{0, 0}, nan, identity, contact(1, 1, 0.5)),
+               std::domain_error);
+  EXPECT_THROW(impulse_friction(disk, vec2{1, 0}, 1.0, identity, contact(0, 1, 0.5)),
+               std::domain_error);
+  EXPECT_THROW(impulse_friction(disk, vec2{1, 0}, 1.0, identity, contact(1, -1, 0.5)),
+               std::domain_error);
+  EXPECT_THROW(impulse_friction(disk, vec2{1, 0}, 1.0, identity, contact(1, 1, -0.5)),
+               std::domain_error);
+}
+
+}  // namespace

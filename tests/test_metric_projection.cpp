@@ -1,0 +1,257 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+// The projection onto the 3-D limit set in a general metric (limit_set.hpp,
+// detail/metric_projector.hpp), against independent computations: the 2-D
+// projection of magnitudes where the metric is isotropic in the force, a
+// brute-force search over the limit surface, and the optimality conditions
+// of a convex problem (on the curve, and the metric's displacement along the
+// normal), which together prove the nearest point.
+
+#include <gtest/gtest.h>
+
+#include <spinslide/limit_set.hpp>
+#include <spinslide/spinslide.hpp>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "random_metric.hpp"
+
+namespace {
+
+using namespace spinslide;
+using matrix = planar_metric<double>::matrix;
+
+// Entries of order one, condition numbers up to about 10⁴.
+matrix random_metric(std::mt19937_64& rng) { return spinslide_test::random_spd(rng, 1e-4, 0.1); }
+
+double metric_distance(const matrix& m, const tangent_wrench<double>& a,
+                       const tangent_wrench<double>& b) {
+  const double d[3] = {a.force_x - b.force_x, a.force_y - b.force_y, a.torque - b.torque};
+  double s = 0;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) s += d[i] * m[i][j] * d[j];
+  return s;
+}
+
+// The nearest of the limit surface's points (𝓕(ε) (cos φ, sin φ), ±𝓣(ε)) on a
+// grid of 720 directions and 1200 ratios log-spaced over [1e-4, 1e4] (and
+// both ends), refined by a second grid around the best.
+template <class P>
+double brute_force_distance(const P& p, const matrix& m, const tangent_wrench<double>& z) {
+  const double pi = 3.14159265358979323846;
+  double best = std::numeric_limits<double>::infinity(), best_phi = 0, best_log = 0;
+  auto try_point = [&](double phi, double log_eps, double sign) {
+    const auto ft = p.force_torque(std::exp(log_eps));
+    const tangent_wrench<double> c{ft.force * std::cos(phi), ft.force * std::sin(phi),
+                                   sign * ft.torque};
+    const double d = metric_distance(m, c, z);
+    if (d < best) {
+      best = d;
+      best_phi = phi;
+      best_log = log_eps;
+    }
+  };
+  const double lo = std::log(1e-4), hi = std::log(1e4);
+  for (double sign : {-1.0, 1.0}) {
+    for (int i = 0; i < 720; ++i)
+      for (int j = 0; j <= 1200; ++j) try_point(2 * pi * i / 720, lo + (hi - lo) * j / 1200, sign);
+  }
+  const double sign = z.torque >= 0 ? 1.0 : -1.0;
+  for (int round = 0; round < 3; ++round) {
+    const double dphi = 2 * pi / 720 / std::pow(40.0, round),
+                 dlog = (hi - lo) / 1200 / std::pow(40.0, round);
+    const double phi0 = best_phi, log0 = best_log;
+    for (int i = -40; i <= 40; ++i)
+      for (int j = -40; j <= 40; ++j)
+        for (double s : {sign, -sign}) try_point(phi0 + i * dphi / 20, log0 + j * dlog / 20, s);
+  }
+  return best;
+}
+
+struct case_data {
+  matrix m;
+  tangent_wrench<double> z;
+};
+
+std::vector<case_data> random_cases(int n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  std::vector<case_data> out;
+  while (static_cast<int>(out.size()) < n) {
+    const tangent_wrench<double> z{u(rng), u(rng), u(rng)};
+    out.push_back({random_metric(rng), z});
+  }
+  return out;
+}
+
+// The outward normal of L₃ at the projection's point, (ε f̂, σ) scaled to
+// unit length; at ε = ∞ (f̂, 0).
+std::array<double, 3> outward_normal(const wrench_projection<double>& r) {
+  const double f = std::hypot(r.point.force_x, r.point.force_y);
+  const double fx = f > 0 ? r.point.force_x / f : 0, fy = f > 0 ? r.point.force_y / f : 0;
+  const double sigma = r.point.torque >= 0 ? 1 : -1;
+  if (std::isinf(r.ratio)) return {fx, fy, 0};
+  const double len = std::hypot(r.ratio, 1.0);
+  return {r.ratio * fx / len, r.ratio * fy / len, sigma / len};
+}
+
+// The optimality conditions: the point is on the curve at its ratio (to a
+// few ulp), and M(z − p) is along the outward normal (to 1e-12 of its
+// length).  For a convex set these prove the nearest point.
+template <class P>
+void expect_optimal(const P& p, const matrix& m, const tangent_wrench<double>& z,
+                    const wrench_projection<double>& r) {
+  ASSERT_FALSE(r.sticking);
+  const auto ft = p.force_torque(r.ratio);
+  EXPECT_NEAR(std::hypot(r.point.force_x, r.point.force_y), ft.force, 4e-16 * (1 + ft.force));
+  EXPECT_NEAR(std::fabs(r.point.torque), ft.torque, 4e-16 * (1 + ft.torque));
+  const double d[3] = {z.force_x - r.point.force_x, z.force_y - r.point.force_y,
+                       z.torque - r.point.torque};
+  double s[3] = {0, 0, 0};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) s[i] += m[i][j] * d[j];
+  const std::array<double, 3> n = outward_normal(r);
+  const double slen = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+  const double along = s[0] * n[0] + s[1] * n[1] + s[2] * n[2];
+  EXPECT_GT(along, 0) << "the slip points outwards";
+  const double across[3] = {s[0] - along * n[0], s[1] - along * n[1], s[2] - along * n[2]};
+  const double off =
+      std::sqrt(across[0] * across[0] + across[1] * across[1] + across[2] * across[2]);
+  EXPECT_LE(off, 1e-12 * slen) << "normality, ratio " << r.ratio;
+}
+
+template <class P>
+void expect_against_brute_force(const P& p, const std::string& name) {
+  int slipping = 0;
+  for (const case_data& c : random_cases(12, 5)) {
+    const planar_metric<double> metric(c.m);
+    const auto r = project_to_limit_set(p, c.z, metric);
+    if (r.sticking) continue;
+    ++slipping;
+    expect_optimal(p, c.m, c.z, r);
+    const double ours = metric_distance(c.m, r.point, c.z);
+    const double grid = brute_force_distance(p, c.m, c.z);
+    EXPECT_LE(ours, grid * (1 + 1e-12)) << name << ": the grid found a nearer point";
+    EXPECT_GE(ours, grid * (1 - 1e-6)) << name << ": the grid's best is far from ours";
+  }
+  EXPECT_GE(slipping, 6) << name;
+}
+
+TEST(MetricProjection, GeneralMetricAgainstBruteForce) {
+  expect_against_brute_force(uniform_disk<>(), "uniform_disk");
+  expect_against_brute_force(hertz<>(), "hertz");
+  expect_against_brute_force(tabulated_profile<>(annulus<>(0.125)), "tabulated CD");
+}
+
+TEST(MetricProjection, OptimalOnManyRandomMetrics) {
+  const hertz<> h;
+  const uniform_disk<> d;
+  for (const case_data& c : random_cases(2000, 17)) {
+    const planar_metric<double> metric(c.m);
+    for (int k = 0; k < 2; ++k) {
+      const auto r =
+          k == 0 ? project_to_limit_set(h, c.z, metric) : project_to_limit_set(d, c.z, metric);
+      if (!r.sticking) {
+        if (k == 0) expect_optimal(h, c.m, c.z, r);
+        if (k == 1) expect_optimal(d, c.m, c.z, r);
+      }
+    }
+  }
+}
+
+// A metric isotropic in the force (any rotation of diag(m, m, m w)) keeps the
+// force's direction: the answer is the 2-D projection of the magnitudes.
+TEST(MetricProjection, IsotropicMetricIsTheProjectionOfMagnitudes) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-2, 2), lw(-3, 3);
+  const uniform_disk<> p;
+  int slipping = 0;
+  for (int i = 0; i < 500; ++i) {
+    const double scale = std::exp(lw(rng)), w = std::exp(lw(rng));
+    const planar_metric<double> metric(matrix{{{scale, 0, 0}, {0, scale, 0}, {0, 0, scale * w}}});
+    const tangent_wrench<double> z{u(rng), u(rng), u(rng)};
+    const auto r = project_to_limit_set(p, z, metric);
+    const double zf = std::hypot(z.force_x, z.force_y);
+    const auto flat = project_to_limit_set(p, zf, std::fabs(z.torque), w);
+    ASSERT_EQ(r.sticking, flat.sticking);
+    if (r.sticking) {
+      EXPECT_EQ(r.point.force_x, z.force_x);
+      EXPECT_EQ(r.point.force_y, z.force_y);
+      EXPECT_EQ(r.point.torque, z.torque);
+      continue;
+    }
+    ++slipping;
+    EXPECT_NEAR(std::hypot(r.point.force_x, r.point.force_y), flat.force, 2e-14);
+    EXPECT_NEAR(std::fabs(r.point.torque), flat.torque, 2e-14);
+    EXPECT_NEAR(r.point.force_x * z.force_y - r.point.force_y * z.force_x, 0, 1e-14)
+        << "the force keeps the direction of z's";
+    EXPECT_GE(r.point.torque * z.torque, 0) << "and the torque its sign";
+    if (std::isfinite(flat.ratio) && flat.ratio > 0) {
+      EXPECT_NEAR(r.ratio / flat.ratio, 1, 1e-11);
+    }
+  }
+  EXPECT_GE(slipping, 200);
+}
+
+TEST(MetricProjection, AStartingRatioGivesTheSameProjection) {
+  const hertz<> h;
+  for (const case_data& c : random_cases(200, 23)) {
+    const planar_metric<double> metric(c.m);
+    const auto r = project_to_limit_set(h, c.z, metric);
+    if (r.sticking) continue;
+    for (double start : {1e-3, 0.5, 3.0, 1e4}) {
+      const auto s = project_to_limit_set(h, c.z, metric, starting_ratio<double>{start});
+      EXPECT_NEAR(s.point.force_x, r.point.force_x, 1e-14);
+      EXPECT_NEAR(s.point.force_y, r.point.force_y, 1e-14);
+      EXPECT_NEAR(s.point.torque, r.point.torque, 1e-14);
+    }
+  }
+}
+
+TEST(MetricProjection, BadMetricOrPointIsADomainError) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(planar_metric<double>(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, nan}}}),
+               std::domain_error);
+  EXPECT_THROW(planar_metric<double>(matrix{{{1, 0.5, 0}, {0, 1, 0}, {0, 0, 1}}}),
+               std::domain_error);  // not symmetric
+  EXPECT_THROW(planar_metric<double>(matrix{{{1, 2, 0}, {2, 1, 0}, {0, 0, 1}}}),
+               std::domain_error);  // indefinite
+  EXPECT_THROW(planar_metric<double>(matrix{{{1, 0, 0}, {0, 0, 0}, {0, 0, 1}}}),
+               std::domain_error);  // singular
+  const planar_metric<double> identity(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
+  EXPECT_THROW(project_to_limit_set(uniform_disk<>(), tangent_wrench<double>{nan, 0, 0}, identity),
+               std::domain_error);
+  EXPECT_THROW(project_to_limit_set(
+                   uniform_disk<>(),
+                   tangent_wrench<double>{0, std::numeric_limits<double>::infinity(), 0}, identity),
+               std::domain_error);
+  EXPECT_THROW(project_to_limit_set(uniform_disk<>(), tangent_wrench<double>{2, 0, 0}, identity,
+                                    starting_ratio<double>{-1}),
+               std::domain_error);
+}
+
+// Pure sliding and pure spinning targets land on the curve's ends exactly.
+TEST(MetricProjection, EndsOfTheCurve) {
+  const planar_metric<double> identity(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
+  const uniform_disk<> p;
+  const auto slide = project_to_limit_set(p, tangent_wrench<double>{0, -3, 0}, identity);
+  EXPECT_EQ(slide.point.force_x, 0);
+  EXPECT_EQ(slide.point.force_y, -1);
+  EXPECT_EQ(slide.point.torque, 0);
+  EXPECT_TRUE(std::isinf(slide.ratio));
+  const auto spin = project_to_limit_set(p, tangent_wrench<double>{0, 0, -3}, identity);
+  EXPECT_EQ(spin.point.force_x, 0);
+  EXPECT_EQ(spin.point.force_y, 0);
+  EXPECT_DOUBLE_EQ(spin.point.torque, -p.mean_radius());
+  EXPECT_EQ(spin.ratio, 0);
+}
+
+}  // namespace
