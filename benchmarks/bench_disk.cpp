@@ -30,6 +30,7 @@
 #include <spinslide/impulse_friction.hpp>
 #include <spinslide/limit_set.hpp>
 #include <spinslide/profile.hpp>
+#include <spinslide/spring_friction.hpp>
 #include <spinslide/tabulated.hpp>
 
 #include <boost/math/constants/constants.hpp>
@@ -265,19 +266,28 @@ void spinslide_force_torque_cpp_bin_float_50(benchmark::State& s) {
 }
 
 // The contact law per call, at the same ratios: v = (ε cos φ, ε sin φ), ω = 1, a = 1.
+// a = 1, N = 2, μ = 0.5; the regularization of 1e-6 is below every input.
+const spinslide::force_contact<double>& law_contact() {
+  static const spinslide::force_contact<double> c{spinslide::patch_radius<double>{1.0},
+                                                  spinslide::normal_force<double>{2.0},
+                                                  spinslide::friction_coefficient<double>{0.5}};
+  return c;
+}
 void contact_law_uniform_disk(benchmark::State& s) {
-  static const spinslide::contact_law<> law;
+  static const spinslide::contact_law<> law(spinslide::uniform_disk<>(),
+                                            spinslide::velocity_scale<double>{1e-6});
   scalar<double>(s, [](double e) {
     const std::array<double, 2> v = {0.6 * e, 0.8 * e};
-    return law(v, 1.0, 1.0, 2.0, 0.5);
+    return law(v, 1.0, law_contact());
   });
 }
 void contact_law_tabulated_disk(benchmark::State& s) {
   static const spinslide::contact_law<spinslide::tabulated_profile<>> law{
-      spinslide::tabulated_profile<>(spinslide::uniform_disk<>())};
+      spinslide::tabulated_profile<>(spinslide::uniform_disk<>()),
+      spinslide::velocity_scale<double>{1e-6}};
   scalar<double>(s, [](double e) {
     const std::array<double, 2> v = {0.6 * e, 0.8 * e};
-    return law(v, 1.0, 1.0, 2.0, 0.5);
+    return law(v, 1.0, law_contact());
   });
 }
 void tabulated_disk_force_torque(benchmark::State& s) {
@@ -424,6 +434,67 @@ template <class P>
 void impulse_sticking(benchmark::State& s) {
   impulse<P>(s, 1e3, false);
 }
+// The spring-history law (spring_friction.hpp), Mindlin springs: sliding
+// from the steady state of each ratio ε (the springs holding μN(𝓕, a𝓣)(ε),
+// the history's ratio ε, the next increment (εaΔφ, 0, Δφ)), which caps back
+// onto the same point; sticking from relaxed springs and a small increment.
+struct spring_case {
+  spinslide::spring_history<std::array<double, 2>, double> history;
+  std::array<double, 2> increment;
+  double twist;
+};
+const spinslide::spring_stiffness<double>& bench_springs() {
+  static const auto k = spinslide::mindlin_springs(spinslide::tangential_stiffness<double>{1e5},
+                                                   spinslide::patch_radius<double>{0.01});
+  return k;
+}
+spinslide::force_contact<double> spring_load() {
+  return {spinslide::patch_radius<double>{0.01}, spinslide::normal_force<double>{10.0},
+          spinslide::friction_coefficient<double>{0.3}};
+}
+template <class P>
+const std::vector<spring_case>& spring_cases(bool sliding) {
+  static const auto make = [](bool slide) {
+    std::vector<spring_case> out;
+    const double a = 0.01, load = 3, dphi = 1e-4;
+    const auto& k = bench_springs();
+    for (double e : inputs<double>()) {
+      const auto c = projected<P>().force_torque(e);
+      spring_case sc{
+          {{load * c.force / k.tangential.value, 0}, load * a * c.torque / k.twisting.value, e},
+          {-e * a * dphi, 0},
+          -dphi};
+      if (!slide) sc = {{{0, 0}, 0, 0}, {1e-7, 0}, 1e-5};
+      out.push_back(sc);
+    }
+    return out;
+  };
+  static const std::vector<spring_case> slide = make(true), stick = make(false);
+  return sliding ? slide : stick;
+}
+template <class P>
+void springs(benchmark::State& s, bool sliding) {
+  const auto& cases = spring_cases<P>(sliding);
+  const auto load = spring_load();
+  for (auto _ : s) {
+    for (const auto& c : cases) {
+      auto h = c.history;
+      const auto r = spinslide::spring_history_friction(projected<P>(), h, c.increment, c.twist,
+                                                        bench_springs(), load);
+      benchmark::DoNotOptimize(r);
+      benchmark::DoNotOptimize(h);
+    }
+  }
+  s.SetItemsProcessed(s.iterations() * static_cast<int64_t>(cases.size()));
+}
+template <class P>
+void spring_sliding_warm(benchmark::State& s) {
+  springs<P>(s, true);
+}
+template <class P>
+void spring_sticking(benchmark::State& s) {
+  springs<P>(s, false);
+}
 #define SPINSLIDE_BENCH_PROJECTION(P)                  \
   BENCHMARK_TEMPLATE(profile_force_torque, P);         \
   BENCHMARK_TEMPLATE(profile_force_torque_chained, P); \
@@ -432,7 +503,9 @@ void impulse_sticking(benchmark::State& s) {
   BENCHMARK_TEMPLATE(projection_sticking_warm, P);     \
   BENCHMARK_TEMPLATE(impulse_sliding_warm, P);         \
   BENCHMARK_TEMPLATE(impulse_sliding_cold, P);         \
-  BENCHMARK_TEMPLATE(impulse_sticking, P);
+  BENCHMARK_TEMPLATE(impulse_sticking, P);             \
+  BENCHMARK_TEMPLATE(spring_sliding_warm, P);          \
+  BENCHMARK_TEMPLATE(spring_sticking, P);
 SPINSLIDE_BENCH_PROJECTION(spinslide::uniform_disk<>)
 SPINSLIDE_BENCH_PROJECTION(spinslide::hertz<>)
 SPINSLIDE_BENCH_PROJECTION(tabulated_cd)
@@ -499,7 +572,8 @@ int main(int argc, char** argv) {
     const std::string chained = std::string("profile_force_torque_chained<") + p + ">";
     for (const char* kind :
          {"projection_sliding_warm", "projection_sliding_cold", "projection_sticking_warm",
-          "impulse_sliding_warm", "impulse_sliding_cold", "impulse_sticking"}) {
+          "impulse_sliding_warm", "impulse_sliding_cold", "impulse_sticking", "spring_sliding_warm",
+          "spring_sticking"}) {
       reporter.add_comparison(std::string(kind) + "<" + p + ">", base);
       reporter.add_comparison(std::string(kind) + "<" + p + ">", chained);
     }

@@ -45,6 +45,12 @@ void check_outputs(const double* force, std::size_t n, double torque, double muN
   check(!(power > 0), call, "F.v + T.omega > 0: the law does work");
 }
 
+// The named inputs (a, N, μ) of a contact, from plain numbers in this order.
+spinslide::force_contact<double> contact_of(double radius, double normal, double mu) {
+  return {spinslide::patch_radius<double>{radius}, spinslide::normal_force<double>{normal},
+          spinslide::friction_coefficient<double>{mu}};
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -83,12 +89,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool finite_expected =
         moderate({a, N, mu, vx, vy, vz, spin, wx, wy}) && top <= 1e100 && muN * a <= 1e100;
     expect(valid_if(law_ok), "contact_law", [&] {
-      const law_type law(p, vs);
+      const law_type law(p, spinslide::velocity_scale<double>{vs});
+      const auto c = contact_of(a, N, mu);
       const validity vp = !planar_ok                                          ? validity::invalid
                           : planar_speed > std::numeric_limits<double>::max() ? validity::ambiguous
                                                                               : validity::valid;
       expect(vp, "contact_law(planar)", [&] {
-        const auto r = law(std::array<double, 2>{vx, vy}, spin, a, N, mu);
+        const auto r = law(std::array<double, 2>{vx, vy}, spin, c);
         const double power = r.force[0] * vx + r.force[1] * vy + r.torque * spin;
         check_outputs(r.force.data(), 2, r.torque, muN, a, top, power, finite_expected,
                       "contact_law(planar)");
@@ -112,7 +119,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                           : big    ? validity::ambiguous
                                    : validity::valid;
       expect(v3, "contact_law(3-D)", [&] {
-        const auto r = law(v, w, n, a, N, mu);
+        const auto r = law(v, w, n, c);
         const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
         const double wn = w[0] * n[0] + w[1] * n[1] + w[2] * n[2];
         double power = 0;
@@ -123,7 +130,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       });
     });
   });
-  // The free function: the uniform disk, default regularization.
+  // The free function: the uniform disk, regularized below 1e-6.
   const double vx = in.real<double>(), vy = in.real<double>(), spin = in.real<double>();
   const double a = in.real<double>(), N = in.real<double>(), mu = in.unit<double>();
   const bool ok = a > 0 && std::isfinite(a) && N >= 0 && mu >= 0 && std::isfinite(mu * N) &&
@@ -134,7 +141,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           ? validity::ambiguous
           : validity::valid;
   expect(vf, "contact_friction", [&] {
-    const auto r = spinslide::contact_friction(std::array<double, 2>{vx, vy}, spin, a, N, mu);
+    const auto r =
+        spinslide::contact_friction(std::array<double, 2>{vx, vy}, spin, contact_of(a, N, mu),
+                                    spinslide::velocity_scale<double>{1e-6});
     const double power = r.force[0] * vx + r.force[1] * vy + r.torque * spin;
     check_outputs(r.force.data(), 2, r.torque, mu * N, a, 2.0 / 3, power,
                   moderate({vx, vy, spin, a, N, mu}), "contact_friction");

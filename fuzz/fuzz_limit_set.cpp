@@ -25,11 +25,6 @@ namespace {
 
 using namespace spinslide_fuzz;
 
-template <class P>
-struct projectable : std::true_type {};
-template <class Policy>
-struct projectable<spinslide::pade_approximation<double, Policy>> : std::false_type {};
-
 struct query {
   double x, y, w;
 };
@@ -100,39 +95,35 @@ void check_projection(const P& p, const query& q, const spinslide::limit_project
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz_input in(data, size);
   context().clear();
-  with_profile(in, [&](const auto& p, const char* name, bool) {
-    using P = std::decay_t<decltype(p)>;
-    if constexpr (projectable<P>::value) {
-      context() += std::string(" profile=") + name;
-      const bool caps = std::string(name) == "uncoupled_caps";
-      const query q{in.unit<double>() * 2, in.unit<double>() * 2, in.real<double>()};
-      const double start = in.real<double>();
-      describe("force", q.x);
-      describe("torque", q.y);
-      describe("torque_weight", q.w);
-      describe("start", start);
-      const validity v = valid_if(q.x >= 0 && std::isfinite(q.x) && q.y >= 0 &&
-                                  std::isfinite(q.y) && q.w > 0 && std::isfinite(q.w));
-      spinslide::limit_projection<double> cold{};
-      const bool ran = expect(v, "project_to_limit_set", [&] {
-        cold = spinslide::project_to_limit_set(p, q.x, q.y, q.w);
-        check_projection(p, q, cold, caps);
-      });
-      const validity vs = v == validity::valid ? valid_if(start >= 0) : v;
-      expect(vs, "project_to_limit_set(start)", [&] {
-        const auto warm = spinslide::project_to_limit_set(p, q.x, q.y, q.w,
-                                                          spinslide::starting_ratio<double>{start});
-        check_projection(p, q, warm, caps);
-        if (ran && warm.sticking == cold.sticking && !cold.sticking) {
-          // Both nearest to rounding.
-          const double dc = squared(q, cold.force, cold.torque);
-          const double dw = squared(q, warm.force, warm.torque);
-          check(!std::isfinite(dc) ||
-                    std::fabs(dw - dc) <= 1e-6 * dc + rounding_allowance(q, dc, p.mean_radius()),
-                "project_to_limit_set(start)", "the start changed the distance");
-        }
-      });
-    }
+  with_projectable_profile(in, [&](const auto& p, const char* name) {
+    const bool caps = std::string(name) == "uncoupled_caps";
+    const query q{in.unit<double>() * 2, in.unit<double>() * 2, in.real<double>()};
+    const double start = in.real<double>();
+    describe("force", q.x);
+    describe("torque", q.y);
+    describe("torque_weight", q.w);
+    describe("start", start);
+    const validity v = valid_if(q.x >= 0 && std::isfinite(q.x) && q.y >= 0 && std::isfinite(q.y) &&
+                                q.w > 0 && std::isfinite(q.w));
+    spinslide::limit_projection<double> cold{};
+    const bool ran = expect(v, "project_to_limit_set", [&] {
+      cold = spinslide::project_to_limit_set(p, q.x, q.y, q.w);
+      check_projection(p, q, cold, caps);
+    });
+    const validity vs = v == validity::valid ? valid_if(start >= 0) : v;
+    expect(vs, "project_to_limit_set(start)", [&] {
+      const auto warm = spinslide::project_to_limit_set(p, q.x, q.y, q.w,
+                                                        spinslide::starting_ratio<double>{start});
+      check_projection(p, q, warm, caps);
+      if (ran && warm.sticking == cold.sticking && !cold.sticking) {
+        // Both nearest to rounding.
+        const double dc = squared(q, cold.force, cold.torque);
+        const double dw = squared(q, warm.force, warm.torque);
+        check(!std::isfinite(dc) ||
+                  std::fabs(dw - dc) <= 1e-6 * dc + rounding_allowance(q, dc, p.mean_radius()),
+              "project_to_limit_set(start)", "the start changed the distance");
+      }
+    });
   });
   return 0;
 }

@@ -18,6 +18,8 @@
 #include <spinslide/tabulated.hpp>
 
 #include <array>
+#include <string>
+#include <type_traits>
 
 namespace spinslide_fuzz {
 
@@ -91,6 +93,25 @@ void with_profile(fuzz_input& in, Visit visit, bool models = true) {
       break;
     }
   }
+}
+
+// The profiles the limit-set projections take: all but the Padé
+// approximants, whose curve's normal is not (ε, 1) (they do not compile there).
+template <class P>
+struct projectable : std::true_type {};
+template <class Policy>
+struct projectable<spinslide::pade_approximation<double, Policy>> : std::false_type {};
+
+/// with_profile over the projectable profiles only, the profile's name added
+/// to the context; visit(p, name).
+template <class Visit>
+void with_projectable_profile(fuzz_input& in, Visit visit) {
+  with_profile(in, [&](const auto& p, const char* name, bool) {
+    if constexpr (projectable<std::decay_t<decltype(p)>>::value) {
+      context() += std::string(" profile=") + name;
+      visit(p, name);
+    }
+  });
 }
 
 }  // namespace spinslide_fuzz

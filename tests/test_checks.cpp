@@ -23,6 +23,12 @@
 namespace {
 
 using namespace spinslide;
+
+// The named inputs (a, N, μ) of a contact, from plain numbers in this order.
+spinslide::force_contact<double> contact_of(double radius, double normal, double mu) {
+  return {spinslide::patch_radius<double>{radius}, spinslide::normal_force<double>{normal},
+          spinslide::friction_coefficient<double>{mu}};
+}
 using boost::math::policies::domain_error;
 using boost::math::policies::errno_on_error;
 using boost::math::policies::ignore_error;
@@ -128,7 +134,7 @@ void constructors_throw() {
                       {"pade_approximation<double>", "mean_inverse_radius = nan"});
   expect_domain_error([] { tabulated_profile<double, Policy>(disk(), -1.0); },
                       {"tabulated_profile<double>", "tolerance = -1"});
-  expect_domain_error([] { contact_law<disk>(disk(), -1.0); },
+  expect_domain_error([] { contact_law<disk>(disk(), velocity_scale<double>{-1.0}); },
                       {"contact_law<double>", "velocity_scale = -1"});
   expect_domain_error([] { dimensionless_motion<disk>(disk(), -1.0); },
                       {"dimensionless_motion<double>", "inertia_ratio = -1"});
@@ -179,14 +185,14 @@ TEST(Checks, FunctionsNameThemselvesAndTheArgument) {
       {"trajectory<double>", "a time = 0.5"});
   expect_domain_error(
       [] {
-        const contact_law<> law;
-        law(std::array<double, 2>{1.0, 0.0}, 1.0, 0.05, -1.0, 0.3);
+        const contact_law<> law(uniform_disk<>(), velocity_scale<double>{1e-6});
+        law(std::array<double, 2>{1.0, 0.0}, 1.0, contact_of(0.05, -1.0, 0.3));
       },
-      {"contact_law<double>::operator()", "normal_force = -1"});
+      {"contact_law<double>::operator()", "contact.normal = -1"});
   expect_domain_error(
       [] {
-        const contact_law<> law;
-        law(std::array<double, 2>{1.0, 0.0}, nan, 0.05, 1.0, 0.3);
+        const contact_law<> law(uniform_disk<>(), velocity_scale<double>{1e-6});
+        law(std::array<double, 2>{1.0, 0.0}, nan, contact_of(0.05, 1.0, 0.3));
       },
       {"contact_law<double>::operator()", "the spin = nan"});
   expect_domain_error([] { tilted_cylinder_friction(0.5, 0.05, 0.06, -0.25); },

@@ -226,6 +226,9 @@ TEST(MetricProjection, BadMetricOrPointIsADomainError) {
                std::domain_error);  // indefinite
   EXPECT_THROW(planar_metric<double>(matrix{{{1, 0, 0}, {0, 0, 0}, {0, 0, 1}}}),
                std::domain_error);  // singular
+  EXPECT_THROW(planar_metric<double>(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1e-8}}}),
+               std::domain_error);  // conditioned 1e8 (> 6.7e7)
+  EXPECT_NO_THROW(planar_metric<double>(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1e-7}}}));
   const planar_metric<double> identity(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
   EXPECT_THROW(project_to_limit_set(uniform_disk<>(), tangent_wrench<double>{nan, 0, 0}, identity),
                std::domain_error);
@@ -252,6 +255,22 @@ TEST(MetricProjection, EndsOfTheCurve) {
   EXPECT_EQ(spin.point.force_y, 0);
   EXPECT_DOUBLE_EQ(spin.point.torque, -p.mean_radius());
   EXPECT_EQ(spin.ratio, 0);
+}
+
+// Open (fuzz_impulse, a libFuzzer campaign of a minute): with a metric whose
+// force block is nearly singular (condition ~1e7, inside the accepted
+// 6.7e7), Newton stalls with ∇Ψ ≈ 1e-7, above the √ε_mach it accepts, and
+// raises evaluation_error.  Disabled until the iteration is made robust there
+// (docs/reliability.md, "Open findings").
+TEST(MetricProjection, DISABLED_RegressionStallWithANearlySingularMetric) {
+  const planar_metric<double> metric(matrix{
+      {{3.6685618490186893434e-05, 6.05685714625876865029e-05, 5.97917196785922641492e-05},
+       {6.05685714625876865029e-05, 0.000100134811990465087336, 9.50470879699144067555e-05},
+       {5.97917196785922641492e-05, 9.50470879699144067555e-05, 0.000297451352951397230123}}});
+  const tangent_wrench<double> z{1, 0.97463330898909816824, 0.636651730873736165783};
+  const uniform_disk<> p;
+  const auto r = project_to_limit_set(p, z, metric);
+  expect_optimal(p, metric.entries(), z, r);
 }
 
 }  // namespace

@@ -21,6 +21,12 @@
 
 namespace {
 
+// The named inputs (a, N, μ) of a contact, from plain numbers in this order.
+spinslide::force_contact<double> contact_of(double radius, double normal, double mu) {
+  return {spinslide::patch_radius<double>{radius}, spinslide::normal_force<double>{normal},
+          spinslide::friction_coefficient<double>{mu}};
+}
+
 using namespace boost::math::policies;
 using errno_policy = policy<domain_error<errno_on_error>>;
 using ignore_policy = policy<domain_error<ignore_error>>;
@@ -82,15 +88,16 @@ void check_all() {
   expect_nan<Policy>([&] { return spinslide::simulate_throw(disk, nan, 1.0, 1.0).time; },
                      "simulate_throw(gamma NaN)");
 
-  const spinslide::contact_law<spinslide::uniform_disk<double, Policy>> law;
+  const spinslide::contact_law<spinslide::uniform_disk<double, Policy>> law(
+      spinslide::uniform_disk<double, Policy>(), spinslide::velocity_scale<double>{1e-6});
   expect_nan<Policy>(
       [&] {
-        return law(std::array<double, 2>{0.3, 0.4}, 1.0, -0.05, 2.0, 0.5).torque;
+        return law(std::array<double, 2>{0.3, 0.4}, 1.0, contact_of(-0.05, 2.0, 0.5)).torque;
       },
       "contact_law(radius < 0)");
   expect_nan<Policy>(
       [&] {
-        return law(std::array<double, 2>{nan, 0.4}, 1.0, 0.05, 2.0, 0.5).force[0];
+        return law(std::array<double, 2>{nan, 0.4}, 1.0, contact_of(0.05, 2.0, 0.5)).force[0];
       },
       "contact_law(velocity NaN)");
 }
@@ -101,7 +108,8 @@ TEST(Policies, IgnoreErrorReturnsNan) { check_all<ignore_policy>(); }
 TEST(Policies, ConstructorsThrowWithEveryPolicy) {
   EXPECT_THROW((spinslide::annulus<double, ignore_policy>(1.5)), std::domain_error);
   EXPECT_THROW((spinslide::contact_law<spinslide::uniform_disk<double, ignore_policy>>(
-                   spinslide::uniform_disk<double, ignore_policy>(), -1.0)),
+                   spinslide::uniform_disk<double, ignore_policy>(),
+                   spinslide::velocity_scale<double>{-1.0})),
                std::domain_error);
 }
 

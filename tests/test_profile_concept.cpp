@@ -19,6 +19,12 @@
 namespace {
 
 using namespace spinslide;
+
+// The named inputs (a, N, μ) of a contact, from plain numbers in this order.
+spinslide::force_contact<double> contact_of(double radius, double normal, double mu) {
+  return {spinslide::patch_radius<double>{radius}, spinslide::normal_force<double>{normal},
+          spinslide::friction_coefficient<double>{mu}};
+}
 using archetype = friction_profile_archetype<double>;
 
 // Every profile of the library.
@@ -163,9 +169,9 @@ TEST(ProfileConcept, ArchetypeThroughTheDynamicsTheLawAndTheTables) {
   si(x, dxdt, 0.0);
   EXPECT_NEAR(dxdt[0], -0.3 * 9.81, 1e-15);
   EXPECT_EQ(stop_time(p, 0.5, 1.5, 0.0), 1.5);
-  const contact_law<archetype> law(p, 0.0);
+  const contact_law<archetype> law(p, velocity_scale<double>{0.0});
   // ε = |v|/(a|ω|) = 1: |F| = μN/2, |T| = μNa/2.
-  const auto f = law(std::array<double, 2>{0.3, 0.4}, 10.0, 0.05, 2.0, 0.5);
+  const auto f = law(std::array<double, 2>{0.3, 0.4}, 10.0, contact_of(0.05, 2.0, 0.5));
   EXPECT_NEAR(std::hypot(f.force[0], f.force[1]), 0.5, 1e-15);
   EXPECT_NEAR(f.torque, -0.025, 1e-16);
   const tabulated_profile<> table(p);

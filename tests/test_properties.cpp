@@ -18,6 +18,12 @@
 
 namespace {
 
+// The named inputs (a, N, μ) of a contact, from plain numbers in this order.
+spinslide::force_contact<double> contact_of(double radius, double normal, double mu) {
+  return {spinslide::patch_radius<double>{radius}, spinslide::normal_force<double>{normal},
+          spinslide::friction_coefficient<double>{mu}};
+}
+
 // Log-uniform over the whole double range, plus uniform on [0, 4]: 10⁶ ratios.
 std::vector<double> random_ratios(unsigned seed) {
   std::mt19937_64 rng(seed);
@@ -83,7 +89,8 @@ TEST(Properties, ForceInversionSymmetry) {
 // The contact law dissipates: −(F·v + T·ω) ≥ 0 for any velocity, spin,
 // radius, load and friction coefficient.
 TEST(Properties, ContactLawDissipates) {
-  const spinslide::contact_law<> law;
+  const spinslide::contact_law<> law(spinslide::uniform_disk<>(),
+                                     spinslide::velocity_scale<double>{1e-6});
   std::mt19937_64 rng(4);
   std::uniform_real_distribution<double> u(-1, 1), scale(-8, 8);
   for (int i = 0; i < 1000000; ++i) {
@@ -92,7 +99,7 @@ TEST(Properties, ContactLawDissipates) {
     const double w = u(rng) * std::pow(10.0, scale(rng));
     const double a = std::pow(10.0, scale(rng) / 4), N = std::pow(10.0, scale(rng) / 2),
                  mu = std::pow(10.0, scale(rng) / 8);
-    const auto fr = law(v, w, a, N, mu);
+    const auto fr = law(v, w, contact_of(a, N, mu));
     const double power = fr.force[0] * v[0] + fr.force[1] * v[1] + fr.torque * w;
     ASSERT_LE(power, 0) << v[0] << " " << v[1] << " " << w;
   }
@@ -131,12 +138,13 @@ TEST(Threads, ConcurrentEqualsSerial) {
   // Hertz's pressure by the ring quadrature (hertz<> itself is closed-form).
   const auto quadrature =
       spinslide::make_radial_profile<double>([](double r) { return std::sqrt((1 - r) * (1 + r)); });
-  const spinslide::contact_law<spinslide::tabulated_profile<>> law{tab};
+  const spinslide::contact_law<spinslide::tabulated_profile<>> law{
+      tab, spinslide::velocity_scale<double>{1e-6}};
   auto evaluate = [&](std::size_t i) {
     const auto a = spinslide::force_torque(e[i]);
     const auto b = tab.force_torque(e[i]);
     const double c = i % 50 == 0 && e[i] < 1e6 ? quadrature.torque(e[i]) : 0.0;
-    const auto d = law(std::array<double, 2>{e[i], 0.5}, 1.0, 0.1, 1.0, 0.3);
+    const auto d = law(std::array<double, 2>{e[i], 0.5}, 1.0, contact_of(0.1, 1.0, 0.3));
     return std::array<double, 6>{a.force, a.torque, b.force, b.torque, c, d.force[0] + d.torque};
   };
   std::vector<std::array<double, 6>> serial(e.size()), parallel(e.size());

@@ -20,6 +20,12 @@
 
 namespace {
 
+// The named inputs (a, N, μ) of a contact, from plain numbers in this order.
+spinslide::force_contact<double> contact_of(double radius, double normal, double mu) {
+  return {spinslide::patch_radius<double>{radius}, spinslide::normal_force<double>{normal},
+          spinslide::friction_coefficient<double>{mu}};
+}
+
 void put(const char* what, long double x) { std::printf("%s %La\n", what, x); }
 
 const std::vector<double>& ratios() {
@@ -138,15 +144,16 @@ int main() {
   for (double e : {0.0, 0.01, 1.0, 30.0})
     std::printf("tabulated_throw %a %a\n", tt.stop_time(e, 1.0), tt.distance(e, 1.0));
 
-  const contact_law<hertz<>> law(hertz<>(), 1e-3);
+  const contact_law<hertz<>> law(hertz<>(), velocity_scale<double>{1e-3});
   for (double v : {0.0, 1e-5, 0.01, 1.0}) {
-    const auto f2 = law(std::array<double, 2>{v, -0.5 * v}, 3.0, 0.01, 10.0, 0.3);
+    const auto f2 = law(std::array<double, 2>{v, -0.5 * v}, 3.0, contact_of(0.01, 10.0, 0.3));
     const auto f3 = law(std::array<double, 3>{v, 0.2, 0.1}, std::array<double, 3>{0.0, 1.0, 2.0},
-                        std::array<double, 3>{0.0, 0.0, 1.0}, 0.01, 10.0, 0.3);
+                        std::array<double, 3>{0.0, 0.0, 1.0}, contact_of(0.01, 10.0, 0.3));
     std::printf("contact %a %a %a | %a %a %a %a %a %a\n", f2.force[0], f2.force[1], f2.torque,
                 f3.force[0], f3.force[1], f3.force[2], f3.torque[0], f3.torque[1], f3.torque[2]);
   }
-  const auto cf = contact_friction(std::array<double, 2>{0.3, 0.1}, 5.0, 0.06, 1.0, 0.2);
+  const auto cf = contact_friction(std::array<double, 2>{0.3, 0.1}, 5.0, contact_of(0.06, 1.0, 0.2),
+                                   velocity_scale<double>{1e-6});
   std::printf("contact_friction %a %a %a\n", cf.force[0], cf.force[1], cf.torque);
   for (double e : {0.0, 0.5, 2.0}) {
     const auto c = tilted_cylinder_friction(e, 0.05, 0.06, 0.2);

@@ -72,8 +72,13 @@ int main(int argc, char** argv) {
 
   // The regularization scale must be resolved by the time step: the friction
   // changes a speed by μg·dt per step, so v_s = 2μg·dt (docs/contact.md).
-  const spinslide::contact_law<> law(spinslide::uniform_disk<>(), 2 * mu * g * dt);
-  const double N = m * g;
+  const spinslide::contact_law<> law(spinslide::uniform_disk<>(),
+                                     spinslide::velocity_scale<double>{2 * mu * g * dt});
+  // The patch radius, the normal force and μ, each named by its type (a swap
+  // does not compile).
+  const spinslide::force_contact<double> contact{spinslide::patch_radius<double>{R},
+                                                 spinslide::normal_force<double>{m * g},
+                                                 spinslide::friction_coefficient<double>{mu}};
 
   const std::string csv = out + "/box2d_puck.csv";
   FILE* f = spinslide_examples::open_output(csv, "box2d_puck");
@@ -100,7 +105,7 @@ int main(int argc, char** argv) {
     std::fprintf(f, "\n");
     // Puck A: spinslide's coupled law.
     const b2Vec2 va = a->GetLinearVelocity();
-    const auto fr = law(va, static_cast<double>(a->GetAngularVelocity()), R, N, mu);
+    const auto fr = law(va, static_cast<double>(a->GetAngularVelocity()), contact);
     a->ApplyForceToCenter(fr.force, true);
     a->ApplyTorque(static_cast<float>(fr.torque), true);
     world.Step(static_cast<float>(dt), 8, 3);

@@ -16,6 +16,7 @@
 #ifndef SPINSLIDE_CONTACT_HPP
 #define SPINSLIDE_CONTACT_HPP
 
+#include <spinslide/contact_inputs.hpp>
 #include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/product.hpp>
 #include <spinslide/detail/vector_access.hpp>
@@ -41,19 +42,48 @@ struct planar_friction {
 };
 
 /// The friction on a contact in 3-D: force vector (in the tangent plane) and
-/// torque vector (along the normal).
+/// torque vector (along the normal), acting at the patch centre.  On a body
+/// it must be applied there, or at another point together with the moment
+/// that wrench_about gives: applied at the centre of mass without it, the
+/// force's moment (c − x)×F is lost.
 template <class Vec3>
 struct spatial_friction {
   /// The force vector, in the tangent plane, against the sliding velocity.
   Vec3 force;
-  /// The torque vector, along the normal, against the spin.
+  /// The torque vector about the patch centre, along the normal, against the spin.
   Vec3 torque;
 };
+
+/// The same friction as a wrench about `point`: the force unchanged, the
+/// torque T + (c − point) × F with c = `patch_centre` (any frame, the same
+/// for all three).  For a body's centre of mass x this is the force and
+/// torque to apply there.
+template <class Vec3>
+spatial_friction<Vec3> wrench_about(const spatial_friction<Vec3>& friction,
+                                    const Vec3& patch_centre, const Vec3& point) {
+  static_assert(detail::is_vector<Vec3, 3>(),
+                "spinslide::wrench_about: the points and the friction must be 3-component "
+                "vector classes (operator[] or members x, y, z), not pointers or C arrays");
+  using R = std::decay_t<decltype(detail::get<0>(friction.force))>;
+  const R r[3] = {static_cast<R>(detail::get<0>(patch_centre) - detail::get<0>(point)),
+                  static_cast<R>(detail::get<1>(patch_centre) - detail::get<1>(point)),
+                  static_cast<R>(detail::get<2>(patch_centre) - detail::get<2>(point))};
+  const R f[3] = {detail::get<0>(friction.force), detail::get<1>(friction.force),
+                  detail::get<2>(friction.force)};
+  spatial_friction<Vec3> out = friction;
+  detail::set<0>(out.torque, detail::get<0>(friction.torque) + (r[1] * f[2] - r[2] * f[1]));
+  detail::set<1>(out.torque, detail::get<1>(friction.torque) + (r[2] * f[0] - r[0] * f[2]));
+  detail::set<2>(out.torque, detail::get<2>(friction.torque) + (r[0] * f[1] - r[1] * f[0]));
+  return out;
+}
 
 /// The contact law for one profile, with a regularization near rest.
 ///
 /// Near rest ε is undefined.  With ρ = √(|v|² + (aω)²) and the velocity scale
-/// v_s (default 1e-6, in the caller's velocity unit), the exact law is scaled
+/// v_s (a required argument, in the caller's velocity unit: about 2μgΔt for
+/// an explicit integrator with step Δt, so that the step resolves it; there
+/// is no default, as 1e-6 made the spin chatter at engine time steps), the
+/// exact law is scaled
 /// by min(1, ρ/v_s): continuous everywhere (F, T → 0 as ρ → 0 whatever the
 /// direction), still dissipative (the factor is ≥ 0), and exactly the
 /// unregularized law for ρ ≥ v_s.  It keeps the coupling: the direction of
@@ -69,13 +99,16 @@ class contact_law {
   /// The profile's floating-point type.
   using value_type = Real;
 
-  /// The law for `profile`, regularized below `velocity_scale` = v_s (finite
-  /// and ≥ 0; 0: no regularization); otherwise std::domain_error.
-  explicit contact_law(Profile profile = Profile(), Real velocity_scale = Real(1e-6))
+  /// The law for `profile`, regularized below `scale` = v_s (finite and ≥ 0;
+  /// 0: no regularization); otherwise std::domain_error.  The law has no
+  /// static friction: a load below μN creeps at v_s·F/(μN) (docs/contact.md,
+  /// "Near rest"); for exact stick use impulse_friction or
+  /// spring_history_friction.
+  contact_law(Profile profile, velocity_scale<Real> scale)
       : profile_(std::move(profile)),
         vs_(detail::checked_constructor_argument<Policy>(
-            "spinslide::contact_law<%1%>::contact_law(profile, %1%)", "velocity_scale",
-            velocity_scale, detail::argument_rule::finite_non_negative)) {}
+            "spinslide::contact_law<%1%>::contact_law(profile, velocity_scale)", "velocity_scale",
+            scale.value, detail::argument_rule::finite_non_negative)) {}
 
   /// The profile.
   const Profile& profile() const { return profile_; }
@@ -83,11 +116,11 @@ class contact_law {
   Real velocity_scale() const { return vs_; }
 
   /// Planar contact.  `velocity`: the relative sliding velocity (x, y);
-  /// `spin`: the relative angular velocity about the normal; `radius` a > 0,
-  /// `normal_force` N ≥ 0, `friction_coefficient` μ ≥ 0.
+  /// `spin`: the relative angular velocity about the normal; `contact`: the
+  /// radius a > 0, the normal force N ≥ 0 and μ ≥ 0, each named by its type.
   template <class Vec2>
-  planar_friction<Vec2, Real> operator()(const Vec2& velocity, Real spin, Real radius,
-                                         Real normal_force, Real friction_coefficient) const {
+  planar_friction<Vec2, Real> operator()(const Vec2& velocity, Real spin,
+                                         const force_contact<Real>& contact) const {
     static_assert(detail::is_vector<Vec2, 2>(),
                   "spinslide::contact_law: the velocity must be a 2-component vector class "
                   "(operator[] or members x, y), not a pointer or a C array: copy a raw array "
@@ -95,21 +128,22 @@ class contact_law {
     const Real vx = static_cast<Real>(detail::get<0>(velocity));
     const Real vy = static_cast<Real>(detail::get<1>(velocity));
     Real fx, fy, t;
-    law(vx, vy, spin, radius, normal_force, friction_coefficient, fx, fy, t);
+    law(vx, vy, spin, contact, fx, fy, t);
     planar_friction<Vec2, Real> out{Vec2{}, t};
     detail::set<0>(out.force, fx);
     detail::set<1>(out.force, fy);
     return out;
   }
 
-  /// 3-D contact.  `velocity` and `angular_velocity`: relative velocity and
-  /// angular velocity of the body at the contact point; `normal`: the unit
-  /// contact normal.  Only the tangential part of the velocity and the normal
-  /// part of the angular velocity enter (rolling is not friction here).
+  /// 3-D contact.  `velocity` and `angular_velocity`: relative velocity of
+  /// the body at the patch centre and its relative angular velocity;
+  /// `normal`: the unit contact normal; `contact` as above.  Only the
+  /// tangential part of the velocity and the normal part of the angular
+  /// velocity enter (rolling is not friction here).  The result acts at the
+  /// patch centre (wrench_about moves it to any point).
   template <class Vec3>
   spatial_friction<Vec3> operator()(const Vec3& velocity, const Vec3& angular_velocity,
-                                    const Vec3& normal, Real radius, Real normal_force,
-                                    Real friction_coefficient) const {
+                                    const Vec3& normal, const force_contact<Real>& contact) const {
     static_assert(
         detail::is_vector<Vec3, 3>(),
         "spinslide::contact_law: the velocity, angular velocity and normal must be "
@@ -127,7 +161,7 @@ class contact_law {
                  static_cast<Real>(detail::get<2>(velocity))};
     const Real speed = detail::tangential_part(v, n);  // the force is along −v_t
     Real f, t;
-    magnitudes(speed, w, radius, normal_force, friction_coefficient, f, t);
+    magnitudes(speed, w, contact, f, t);
     spatial_friction<Vec3> out{Vec3{}, Vec3{}};
     // NaN f: a domain error, through a policy that does not throw.
     // −f times the unit vector v/|v| (f/|v| alone overflows for a tiny |v|).
@@ -147,18 +181,18 @@ class contact_law {
  private:
   // |F| (≥ 0, against v) and the signed torque about the normal.
   // The checks of operator(): false, with f = t = the policy's NaN, on bad input.
-  static bool valid(Real speed, Real spin, Real a, Real N, Real mu, Real& f, Real& t) {
+  static bool valid(Real speed, Real spin, const force_contact<Real>& contact, Real& f, Real& t) {
     static const char* function = "spinslide::contact_law<%1%>::operator()";
     using detail::argument_rule;
     using detail::check;
     f = t = 0;
     Real invalid = 0;
+    const Real a = contact.radius.value, N = contact.normal.value, mu = contact.friction.value;
     const bool ok =
-        check(function, "radius", a, argument_rule::finite_positive, &invalid, Policy()) &&
-        check(function, "normal_force", N, argument_rule::non_negative, &invalid, Policy()) &&
-        check(function, "friction_coefficient", mu, argument_rule::non_negative, &invalid,
-              Policy()) &&
-        check(function, "normal_force*friction_coefficient", Real(N * mu),
+        check(function, "contact.radius", a, argument_rule::finite_positive, &invalid, Policy()) &&
+        check(function, "contact.normal", N, argument_rule::non_negative, &invalid, Policy()) &&
+        check(function, "contact.friction", mu, argument_rule::non_negative, &invalid, Policy()) &&
+        check(function, "contact.normal*contact.friction", Real(N * mu),
               argument_rule::finite_non_negative, &invalid, Policy()) &&
         check(function, "the sliding speed |v|", speed, argument_rule::finite_non_negative,
               &invalid, Policy()) &&
@@ -167,10 +201,12 @@ class contact_law {
     return ok;
   }
 
-  void magnitudes(Real speed, Real spin, Real a, Real N, Real mu, Real& f, Real& t) const {
+  void magnitudes(Real speed, Real spin, const force_contact<Real>& contact, Real& f,
+                  Real& t) const {
     BOOST_MATH_STD_USING
-    if (!valid(speed, spin, a, N, mu, f, t)) return;
-    const Real muN = mu * N;
+    if (!valid(speed, spin, contact, f, t)) return;
+    const Real a = contact.radius.value;
+    const Real muN = contact.friction.value * contact.normal.value;
     const Real rim = a * fabs(spin);  // a|ω|
     if (!(muN > 0) || (speed == 0 && rim == 0)) return;
     Real F, T;
@@ -197,11 +233,11 @@ class contact_law {
     t = -(spin > 0 ? Real(1) : Real(-1)) * detail::product(muN, scale, a, T);
   }
 
-  void law(Real vx, Real vy, Real spin, Real a, Real N, Real mu, Real& fx, Real& fy,
+  void law(Real vx, Real vy, Real spin, const force_contact<Real>& contact, Real& fx, Real& fy,
            Real& t) const {
     const Real speed = detail::vector_norm(vx, vy, Real(0));
     Real f;
-    magnitudes(speed, spin, a, N, mu, f, t);
+    magnitudes(speed, spin, contact, f, t);
     if ((boost::math::isnan)(f)) {  // a domain error, through a policy that does not throw
       fx = fy = f;
       return;
@@ -216,12 +252,12 @@ class contact_law {
   Real vs_;
 };
 
-/// The uniform-disk contact law as one call (default regularization).
+/// The uniform-disk contact law as one call, regularized below `scale`.
 template <class Vec2, class Real>
-planar_friction<Vec2, Real> contact_friction(const Vec2& velocity, Real spin, Real radius,
-                                             Real normal_force, Real friction_coefficient) {
-  static const contact_law<uniform_disk<Real>> law;
-  return law(velocity, spin, radius, normal_force, friction_coefficient);
+planar_friction<Vec2, Real> contact_friction(const Vec2& velocity, Real spin,
+                                             const force_contact<Real>& contact,
+                                             velocity_scale<Real> scale) {
+  return contact_law<uniform_disk<Real>>(uniform_disk<Real>(), scale)(velocity, spin, contact);
 }
 
 }  // namespace spinslide

@@ -3,9 +3,9 @@
 //  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
 //
 /// \file contact_inputs.hpp
-/// Named inputs of the contact laws: the patch radius, the normal load and
-/// the friction coefficient each have their own type, so that a call cannot
-/// swap them (a radius where a force goes does not compile) and reads plainly:
+/// Named inputs of the contact laws: the patch radius, the normal load, the
+/// friction coefficient and the springs' stiffnesses each have their own type, so that a call
+/// cannot swap them (a radius where a force goes does not compile) and reads plainly:
 ///
 ///     spinslide::impulse_contact<double> c{spinslide::patch_radius<double>{0.06},
 ///                                          spinslide::normal_impulse<double>{p_n},
@@ -34,6 +34,36 @@ struct normal_impulse {
   explicit constexpr normal_impulse(Real v) : value(v) {}
   Real value;  ///< Λ
 };
+/// The normal force N (≥ 0), for the force-level laws.
+template <class Real>
+struct normal_force {
+  /// Explicit, and not an aggregate: a plain number does not convert.
+  explicit constexpr normal_force(Real v) : value(v) {}
+  Real value;  ///< N
+};
+/// The tangential spring's stiffness k_t (force per length, > 0).
+template <class Real>
+struct tangential_stiffness {
+  /// Explicit, and not an aggregate: a plain number does not convert.
+  explicit constexpr tangential_stiffness(Real v) : value(v) {}
+  Real value;  ///< k_t
+};
+/// The twisting spring's stiffness k_θ (torque per radian, > 0).
+template <class Real>
+struct twisting_stiffness {
+  /// Explicit, and not an aggregate: a plain number does not convert.
+  explicit constexpr twisting_stiffness(Real v) : value(v) {}
+  Real value;  ///< k_θ
+};
+/// The regularized contact law's velocity scale v_s (≥ 0, in the caller's
+/// velocity unit; about 2μgΔt for a time step Δt): below it the law is
+/// scaled down linearly to 0 at rest.
+template <class Real>
+struct velocity_scale {
+  /// Explicit, and not an aggregate: a plain number does not convert.
+  explicit constexpr velocity_scale(Real v) : value(v) {}
+  Real value;  ///< v_s
+};
 /// The Coulomb friction coefficient μ (≥ 0).
 template <class Real>
 struct friction_coefficient {
@@ -50,6 +80,31 @@ struct impulse_contact {
   normal_impulse<Real> normal;          ///< Λ
   friction_coefficient<Real> friction;  ///< μ
 };
+
+/// One contact under a normal force, for the force-level laws
+/// (spring_friction.hpp).
+template <class Real>
+struct force_contact {
+  patch_radius<Real> radius;            ///< a
+  normal_force<Real> normal;            ///< N
+  friction_coefficient<Real> friction;  ///< μ
+};
+
+/// force_contact{patch_radius{a}, normal_force{n}, friction_coefficient{mu}}.
+template <class Real>
+force_contact(patch_radius<Real>, normal_force<Real>, friction_coefficient<Real>)
+    -> force_contact<Real>;
+
+/// The two springs of a spring-history contact.
+template <class Real>
+struct spring_stiffness {
+  tangential_stiffness<Real> tangential;  ///< k_t
+  twisting_stiffness<Real> twisting;      ///< k_θ
+};
+
+/// spring_stiffness{tangential_stiffness{kt}, twisting_stiffness{kw}}.
+template <class Real>
+spring_stiffness(tangential_stiffness<Real>, twisting_stiffness<Real>) -> spring_stiffness<Real>;
 
 /// impulse_contact{patch_radius{a}, normal_impulse{p}, friction_coefficient{mu}}.
 template <class Real>

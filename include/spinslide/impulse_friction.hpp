@@ -60,7 +60,7 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
     const impulse_contact<typename Profile::value_type>& contact,
     starting_ratio<typename Profile::value_type> start = {0}) {
   using Real = typename Profile::value_type;
-  detail::require_projectable<Profile, Real>();
+  detail::require_smooth_curve<Profile, Real>();
   static_assert(detail::is_vector<Vec2, 2>(),
                 "spinslide::impulse_friction: the velocity must be a 2-component vector class "
                 "(operator[] or members x, y), not a pointer or a C array: copy a raw array "
@@ -75,12 +75,8 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
   const Real vy = checked(function, "velocity[1]", static_cast<Real>(detail::get<1>(velocity)),
                           argument_rule::finite, pol);
   const Real w = checked(function, "spin", spin, argument_rule::finite, pol);
-  const Real a = checked(function, "contact.radius", contact.radius.value,
-                         argument_rule::finite_positive, pol);
-  const Real n = checked(function, "contact.normal", contact.normal.value,
-                         argument_rule::finite_non_negative, pol);
-  const Real mu = checked(function, "contact.friction", contact.friction.value,
-                          argument_rule::finite_non_negative, pol);
+  const auto patch = detail::checked_patch(function, contact, pol);
+  const Real a = patch.radius, n = patch.normal, mu = patch.friction;
   const Real s0 = checked(function, "start", start.value, argument_rule::non_negative, pol);
   friction_impulse<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN()};
   if (detail::any_reported(vx, vy, w, a, n, mu, s0)) {
@@ -94,8 +90,17 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
   // SWS (inverse S⁻¹W⁻¹S⁻¹), both positive definite since W is.
   const detail::vector3<Real> slip{vx, vy, w};
   detail::vector3<Real> stop = detail::multiply(inverse_mass.inverse(), slip);
-  for (Real& x : stop) x = -x;
-  const Real load = mu * n;
+  for (Real& x : stop)
+    x = checked(function, "the stopping impulse -W^-1 (v, spin)", Real(-x), argument_rule::finite,
+                pol);
+  const Real load = checked(function, "contact.normal*contact.friction", Real(mu * n),
+                            argument_rule::finite, pol);
+  if (detail::any_reported(stop[0], stop[1], stop[2], load)) {
+    detail::set<0>(out.linear, load + stop[0] + stop[1] + stop[2]);
+    detail::set<1>(out.linear, load + stop[0] + stop[1] + stop[2]);
+    out.angular = load + stop[0] + stop[1] + stop[2];
+    return out;
+  }
   if (load == 0 || (vx == 0 && vy == 0 && w == 0)) {
     out.sticking = vx == 0 && vy == 0 && w == 0;
     if (!out.sticking) out.ratio = std::hypot(vx, vy) / (a * std::fabs(w));
@@ -108,14 +113,36 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
       metric[i][j] = scale[i] * inverse_mass.entries()[i][j] * scale[j];
       inverse[i][j] = inverse_mass.inverse()[i][j] / (scale[i] * scale[j]);
     }
-  const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / (load * a)};
+  // SWS is W in the limit set's units: with a patch radius far from W's own
+  // length scale (a² W_ωω against W_vv) it can be too ill-conditioned to
+  // project in; a domain error says so.
+  // (‖SWS‖_F‖(SWS)⁻¹‖_F ≤ κ_F(W)·max(a, 1/a)²: the exact test only where
+  // that bound is not enough.)
+  using std::sqrt;
+  const Real spread = a > 1 ? a : Real(1 / a);
+  const bool surely = inverse_mass.condition_bound() * spread * spread *
+                          sqrt(std::numeric_limits<Real>::epsilon()) <=
+                      1;
+  if (!surely && !detail::well_conditioned(metric, inverse)) {
+    const Real bad = detail::raise_argument_error(
+        function, "contact.radius",
+        "one for which the inverse mass in the limit set's units, diag(1, 1, a) W diag(1, 1, a), "
+        "has a condition number within 1/sqrt(epsilon) (6.7e7 in double)",
+        a, pol);
+    detail::set<0>(out.linear, bad);
+    detail::set<1>(out.linear, bad);
+    out.angular = out.ratio = bad;
+    return out;
+  }
+  // (Divided by a, then by the load: μΛa itself may be subnormal.)
+  const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / a / load};
   const wrench_projection<Real> r =
       detail::metric_projector<Profile>(profile, target, metric, inverse)(s0, function);
   out.sticking = r.sticking;
   out.ratio = r.ratio;
   detail::set<0>(out.linear, r.sticking ? stop[0] : Real(load * r.point.force_x));
   detail::set<1>(out.linear, r.sticking ? stop[1] : Real(load * r.point.force_y));
-  out.angular = r.sticking ? stop[2] : Real(load * a * r.point.torque);
+  out.angular = r.sticking ? stop[2] : Real(load * (a * r.point.torque));
   return out;
 }
 

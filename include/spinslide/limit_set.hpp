@@ -41,6 +41,11 @@ struct starting_ratio {
 namespace detail {
 
 template <class P>
+struct is_uncoupled_caps : std::false_type {};
+template <class Real, class Policy>
+struct is_uncoupled_caps<uncoupled_caps<Real, Policy>> : std::true_type {};
+
+template <class P>
 struct is_pade_approximation : std::false_type {};
 template <class Real, class Policy>
 struct is_pade_approximation<pade_approximation<Real, Policy>> : std::true_type {};
@@ -76,12 +81,25 @@ limit_projection<Real> project_checked(const Profile& profile, Real force, Real 
   return limit_projector<Profile>(profile, f, t, w)(s, function);
 }
 
+// What the 3-D projection requires besides: a limit curve without corners
+// (its Newton iteration minimizes a dissipation function that must be
+// smooth away from rest).
+template <class Profile, class Real>
+constexpr void require_smooth_curve() {
+  require_projectable<Profile, Real>();
+  static_assert(!is_uncoupled_caps<Profile>::value,
+                "project_to_limit_set(tangent_wrench, planar_metric) and impulse_friction: the "
+                "uncoupled caps' limit set is a box, whose corners the 3-D projection's Newton "
+                "iteration cannot resolve; project their magnitudes with the 2-D "
+                "project_to_limit_set, which clamps");
+}
+
 template <class Profile, class Real>
 wrench_projection<Real> project_wrench_checked(const Profile& profile,
                                                const tangent_wrench<Real>& point,
                                                const planar_metric<Real>& metric, Real start,
                                                const char* function) {
-  require_projectable<Profile, Real>();
+  require_smooth_curve<Profile, Real>();
   using Policy = typename Profile::policy_type;
   const Policy pol;
   const vector3<Real> z{

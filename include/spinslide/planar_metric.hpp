@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace spinslide {
 
@@ -41,7 +42,8 @@ class planar_metric {
 
   /// The metric with entries `m` (row-major; m[2][2] weighs the torque).  It
   /// must be finite, symmetric (to 8 ulp of its largest entry; it is then
-  /// symmetrized) and positive definite; otherwise std::domain_error.
+  /// symmetrized), positive definite, and conditioned within 1/√ε_mach
+  /// (‖M‖_F‖M⁻¹‖_F ≤ 6.7e7 in double); otherwise std::domain_error.
   explicit planar_metric(const matrix& m) : m_(m) {
     static const char* function = "spinslide::planar_metric<%1%>::planar_metric(matrix)";
     using std::fabs;
@@ -65,12 +67,20 @@ class planar_metric {
                                    "the first entry of a positive-definite matrix", m[0][0],
                                    throwing());
     inverse_ = detail::cholesky_inverse(factor_);
+    kappa_ = detail::frobenius(m_) * detail::frobenius(inverse_);
+    if (!detail::well_conditioned(m_, inverse_))
+      detail::raise_argument_error(function, "the condition number (Frobenius) of the matrix",
+                                   "at most 1/sqrt(epsilon) (6.7e7 in double)",
+                                   Real(detail::frobenius(m_) * detail::frobenius(inverse_)),
+                                   throwing());
   }
 
   /// The matrix (symmetrized).
   const matrix& entries() const { return m_; }
   /// Its inverse.
   const matrix& inverse() const { return inverse_; }
+  /// ‖M‖_F‖M⁻¹‖_F, which bounds the condition number from above.
+  Real condition_bound() const { return kappa_; }
   /// Its lower Cholesky factor L, m = L Lᵀ.
   const matrix& cholesky_factor() const { return factor_; }
 
@@ -79,6 +89,7 @@ class planar_metric {
   matrix m_;
   matrix factor_{};
   matrix inverse_{};
+  Real kappa_ = 1;
 };
 
 }  // namespace spinslide

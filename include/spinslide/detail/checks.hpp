@@ -29,6 +29,7 @@
 #include <boost/math/tools/precision.hpp>
 
 #include <string>
+#include <type_traits>
 
 namespace spinslide {
 namespace detail {
@@ -152,6 +153,27 @@ T checked_constructor_argument(const char* function, const char* name, T x, argu
 template <class... T>
 bool any_reported(T... xs) {
   return ((boost::math::isnan)(xs) || ...);
+}
+
+/// A contact's radius a, normal load (force or impulse) and μ, checked.
+template <class Real>
+struct patch_values {
+  Real radius;    ///< a > 0, finite
+  Real normal;    ///< N or Λ ≥ 0, finite
+  Real friction;  ///< μ ≥ 0, finite
+};
+
+/// The named inputs of a contact (force_contact or impulse_contact:
+/// members radius, normal, friction, each with a `value`), checked; a
+/// reported error leaves its value NaN.
+template <class Contact, class Policy>
+auto checked_patch(const char* function, const Contact& c, const Policy& pol) {
+  using Real = std::decay_t<decltype(c.radius.value)>;
+  return patch_values<Real>{
+      checked(function, "contact.radius", c.radius.value, argument_rule::finite_positive, pol),
+      checked(function, "contact.normal", c.normal.value, argument_rule::finite_non_negative, pol),
+      checked(function, "contact.friction", c.friction.value, argument_rule::finite_non_negative,
+              pol)};
 }
 
 /// The initial conditions of a throw, checked (check_throw).

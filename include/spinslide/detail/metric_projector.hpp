@@ -51,16 +51,27 @@ class metric_projector {
   // positive definite (a planar_metric's, or derived from one).
   metric_projector(const Profile& profile, const vec& z, const matrix3<Real>& metric,
                    const matrix3<Real>& inverse)
-      : p_(profile), z_(z), m_(metric), inverse_(inverse) {}
+      : p_(profile), z_(z), m_(metric), inverse_(inverse) {
+    // The nearest point does not change if M is scaled: M/d and d·M⁻¹, d the
+    // largest diagonal entry, keep s and Ψ away from over- and underflow
+    // for metrics of any size.
+    const Real d = (std::max)({m_[0][0], m_[1][1], m_[2][2]});
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        m_[i][j] /= d;
+        inverse_[i][j] *= d;
+      }
+  }
 
   // The projection; `start`: a ratio to search from (0 or ∞: none).
   wrench_projection<Real> operator()(Real start, const char* function) {
+    if (largest(z_) > far()) return support_point();
     // With a start: if z lies beyond the support plane of L₃ with the normal
     // n at the start's curve point (zᵀn > D(n) = max over L₃ of pᵀn), z is
     // outside and n a descent direction: Newton from there, one evaluation.
     if (start > 0 && start < std::numeric_limits<Real>::infinity()) {
       const ray r = normal_ray(start, p_.force_torque(start));
-      if (r.gain > 0) return descend(r, function);
+      if (r.resolved) return descend(r, function);
     }
     // Otherwise the 2-D projection decides sticking on the magnitudes and
     // gives the curve point, along z's direction, to start from.
@@ -68,19 +79,43 @@ class metric_projector {
         p_, length(z_[0], z_[1]), std::fabs(z_[2]), torque_weight())(start, function);
     if (flat.sticking) return {{z_[0], z_[1], z_[2]}, true, std::numeric_limits<Real>::quiet_NaN()};
     const ray r = normal_ray(flat.ratio, {flat.force, flat.torque});
-    if (r.gain > 0) return descend(r, function);
-    // No gain (z outside L₃ only by rounding): the 2-D answer itself.
+    if (r.resolved) return descend(r, function);
+    // No gain beyond rounding (z outside L₃ only by rounding): the 2-D answer
+    // itself, on the curve and within rounding of z.
     return result_on_ray(r, {flat.force, flat.torque}, flat.ratio);
   }
 
  private:
+  // Beyond this distance from L₃ (whose points are O(1)) the nearest point
+  // is the support point below to within 1e-150, and Ψ's terms would
+  // overflow.
+  static Real far() { return Real(1e150); }
+
+  // For z far from L₃: the point of L₃ whose outward normal is along
+  // M(z − p) ≈ Mz, relatively within |p|/|z|: at the ratio
+  // ε = |(Mz)_f|/|(Mz)_t| along (Mz)_f's direction and (Mz)_t's sign.
+  wrench_projection<Real> support_point() const {
+    const Real scale = largest(z_);
+    const vec u = multiply(m_, vec{z_[0] / scale, z_[1] / scale, z_[2] / scale});
+    const Real along = length(u[0], u[1]), across = std::fabs(u[2]);
+    const Real eps = across > 0 ? Real(along / across) : std::numeric_limits<Real>::infinity();
+    const force_torque_result<Real> c = p_.force_torque(along > 0 ? eps : Real(0));
+    const Real fx = along > 0 ? Real(u[0] / along) : Real(0);
+    const Real fy = along > 0 ? Real(u[1] / along) : Real(0);
+    return {{c.force * fx, c.force * fy, u[2] < 0 ? Real(-c.torque) : c.torque},
+            false,
+            along > 0 ? eps : Real(0)};
+  }
+
   // The outward normal n at the curve point of ratio ε along z's force
   // direction and torque sign (scaled to a largest component of 1), and the
-  // gain zᵀn − D(n): positive when z lies beyond that point's support plane.
+  // gain zᵀn − D(n): positive when z lies beyond that point's support plane,
+  // and resolved when that is more than rounding (8 ulp of the terms).
   struct ray {
     vec n;
     Real gain;
-    Real dx, dy;  // z's force direction (1, 0 if z has no force)
+    Real dx, dy;    // z's force direction (1, 0 if z has no force)
+    bool resolved;  // gain > 0 beyond rounding
   };
   ray normal_ray(Real eps, const force_torque_result<Real>& c) const {
     const Real zf = length(z_[0], z_[1]);
@@ -90,7 +125,9 @@ class metric_projector {
     r.dx = zf > 0 ? Real(z_[0] / zf) : Real(1);
     r.dy = zf > 0 ? Real(z_[1] / zf) : Real(0);
     r.n = {nf * r.dx, nf * r.dy, z_[2] < 0 ? Real(-nt) : nt};
-    r.gain = dot(z_, r.n) - (nf * c.force + nt * c.torque);
+    const Real along = dot(z_, r.n), support = nf * c.force + nt * c.torque;
+    r.gain = along - support;
+    r.resolved = r.gain > 8 * std::numeric_limits<Real>::epsilon() * (std::fabs(along) + support);
     return r;
   }
 
@@ -223,6 +260,15 @@ class metric_projector {
       last_full = t == 1 ? move : std::numeric_limits<Real>::infinity();
       x = y;
     }
+    // A stall (seen with metrics conditioned near the limit and targets near
+    // the curve's ends, fuzz_impulse): accepted where the optimality residual
+    // ∇Ψ is below √ε_mach of z's size, the answer then on the curve and
+    // nearest to that accuracy; an evaluation error otherwise.
+    vec g{};
+    newton_step(x, g);
+    using std::sqrt;
+    if (largest(g) <= sqrt(std::numeric_limits<Real>::epsilon()) * (1 + largest(z_)))
+      return result(x);
     const Real bad = boost::math::policies::raise_evaluation_error<Real>(
         function, "The metric projection did not converge (last ratio %1%).", x.eps,
         typename Profile::policy_type());
@@ -278,8 +324,8 @@ class metric_projector {
 
   const Profile& p_;
   vec z_;
-  const matrix3<Real>& m_;
-  const matrix3<Real>& inverse_;
+  matrix3<Real> m_;
+  matrix3<Real> inverse_;
 };
 
 }  // namespace detail

@@ -1,0 +1,171 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file spring_friction.hpp
+/// Spring-history friction for discrete-element (DEM) contacts: a
+/// tangential spring and a twisting spring, capped together on the coupled
+/// limit set (docs/contact.md, "The spring-history law"; docs/theory.md §11).
+///
+/// Each step the springs take the step's tangential displacement and twist
+/// increments; their trial force F = −k_t ξ and torque T = −k_θ φ are kept if
+/// they lie in μN·L (stick), and otherwise replaced by the nearest point of
+/// μN·L in the springs' energy metric |ΔF|²/k_t + |ΔT|²/k_θ, with the springs
+/// rewritten to match (slip).  Under steady slip (constant increments) this
+/// gives exactly the Contensou law, F = −μN𝓕(ε)v̂ and T = −μNa𝓣(ε) sign ω with
+/// ε = |v|/(a|ω|): the increment is then the metric's normal at the capped
+/// point, which is the curve's normal (ε, 1) at the ratio of the slip
+/// (tests/test_spring_friction.cpp).
+
+#ifndef SPINSLIDE_SPRING_FRICTION_HPP
+#define SPINSLIDE_SPRING_FRICTION_HPP
+
+#include <spinslide/contact_inputs.hpp>
+#include <spinslide/detail/checks.hpp>
+#include <spinslide/detail/vector_access.hpp>
+#include <spinslide/limit_set.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace spinslide {
+
+/// What a spring-history contact keeps from step to step.
+template <class Vec2, class Real>
+struct spring_history {
+  Vec2 displacement;  ///< the tangential spring's stretch ξ (the force is −k_t ξ)
+  Real twist;         ///< the twisting spring's angle φ (the torque is −k_θ φ)
+  Real ratio;         ///< ε at the last slipping step, to start the next search (0: none)
+};
+
+/// The friction of one spring-history contact over one step.
+template <class Vec2, class Real>
+struct spring_friction {
+  Vec2 force;     ///< F, on the body whose relative motion the increments describe
+  Real torque;    ///< T about the normal
+  bool sticking;  ///< true: the springs' trial state was admissible and is kept
+  Real ratio;     ///< ε of the capped state (NaN if sticking)
+};
+
+/// The springs of a Hertz–Mindlin contact of radius a: the tangential
+/// stiffness k_t (Mindlin: 8G*a for the effective shear modulus G*), and
+/// Marshall's twisting stiffness k_t a²/2 (as LAMMPS' `twisting marshall`).
+/// In the limit set's units their energy metric weighs the torque by
+/// a²k_t/k_θ = 2.
+template <class Real>
+spring_stiffness<Real> mindlin_springs(tangential_stiffness<Real> kt, patch_radius<Real> a) {
+  return {kt, twisting_stiffness<Real>{kt.value * a.value * a.value / 2}};
+}
+
+/// One step of a spring-history contact (see the file's comment):
+/// `history` is updated in place; `displacement_increment` (a 2-component
+/// vector class in the tangent plane's axes) and `twist_increment` are the
+/// step's relative tangential displacement and rotation about the normal.
+/// Every input finite, the stiffnesses and a > 0, N and μ ≥ 0, all of the
+/// profile's value_type; otherwise a domain error (and the history is left
+/// as it was).  No allocation; when it slips, a few evaluations of the
+/// profile (fewer from the history's ratio).
+template <class Profile, class Vec2>
+spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
+    const Profile& profile, spring_history<Vec2, typename Profile::value_type>& history,
+    const Vec2& displacement_increment, typename Profile::value_type twist_increment,
+    const spring_stiffness<typename Profile::value_type>& springs,
+    const force_contact<typename Profile::value_type>& contact) {
+  using Real = typename Profile::value_type;
+  detail::require_projectable<Profile, Real>();
+  static_assert(detail::is_vector<Vec2, 2>(),
+                "spinslide::spring_history_friction: the displacement must be a 2-component "
+                "vector class (operator[] or members x, y), not a pointer or a C array");
+  static const char* function =
+      "spinslide::spring_history_friction<%1%>(profile, history, increment, %1%, springs, "
+      "contact)";
+  using detail::argument_rule;
+  using detail::checked;
+  const typename Profile::policy_type pol;
+  // The springs after the increments: each increment, and each sum, finite.
+  auto stretched = [&](const char* name, Real held, Real increment) {
+    return checked(
+        function, name,
+        Real(held + checked(function, "an increment", increment, argument_rule::finite, pol)),
+        argument_rule::finite, pol);
+  };
+  const Real x = stretched("history.displacement[0] + increment[0]",
+                           static_cast<Real>(detail::get<0>(history.displacement)),
+                           static_cast<Real>(detail::get<0>(displacement_increment)));
+  const Real y = stretched("history.displacement[1] + increment[1]",
+                           static_cast<Real>(detail::get<1>(history.displacement)),
+                           static_cast<Real>(detail::get<1>(displacement_increment)));
+  const Real phi = stretched("history.twist + twist_increment", history.twist, twist_increment);
+  const Real kt = checked(function, "springs.tangential", springs.tangential.value,
+                          argument_rule::finite_positive, pol);
+  const Real kw = checked(function, "springs.twisting", springs.twisting.value,
+                          argument_rule::finite_positive, pol);
+  const auto patch = detail::checked_patch(function, contact, pol);
+  const Real a = patch.radius, n = patch.normal, mu = patch.friction;
+  const Real start =
+      checked(function, "history.ratio", history.ratio, argument_rule::non_negative, pol);
+  spring_friction<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN()};
+  if (detail::any_reported(x, y, phi, kt, kw, a, n, mu, start)) {
+    detail::set<0>(out.force, out.ratio);
+    detail::set<1>(out.force, out.ratio);
+    out.torque = out.ratio;
+    return out;
+  }
+  // The trial state, and its magnitudes in the limit set's units.
+  // The springs' trial force and torque, which must not overflow.
+  const Real fx =
+      checked(function, "the trial force -k_t xi[0]", Real(-kt * x), argument_rule::finite, pol);
+  const Real fy =
+      checked(function, "the trial force -k_t xi[1]", Real(-kt * y), argument_rule::finite, pol);
+  const Real t =
+      checked(function, "the trial torque -k_w phi", Real(-kw * phi), argument_rule::finite, pol);
+  const Real f = checked(function, "the trial force's magnitude", Real(std::hypot(fx, fy)),
+                         argument_rule::finite, pol);
+  if (detail::any_reported(fx, fy, t, f)) {
+    detail::set<0>(out.force, f + fx + fy + t);
+    detail::set<1>(out.force, f + fx + fy + t);
+    out.torque = f + fx + fy + t;
+    return out;
+  }
+  const Real load = mu * n;
+  limit_projection<Real> cap{0, 0, f == 0 && t == 0, std::numeric_limits<Real>::quiet_NaN()};
+  if (load > 0) {
+    cap = project_to_limit_set(profile, f / load, std::fabs(t) / a / load, a * a * kt / kw,
+                               starting_ratio<Real>{start});
+  }
+  out.sticking = cap.sticking;
+  out.ratio = cap.ratio;
+  // Sticking keeps the trial state; slipping keeps the force's direction and
+  // the torque's sign (the metric is isotropic in the plane) and rewrites
+  // the springs.
+  const Real scale = out.sticking ? Real(1) : f > 0 ? Real(cap.force * load / f) : Real(0);
+  const Real torque = out.sticking ? t : std::copysign(load * (a * cap.torque), t);
+  // The springs that hold the result (finite: a spring too soft for the
+  // capped force, F/k beyond the largest value, is a domain error and the
+  // history is left as it was).
+  const Real sx = checked(function, "the rewritten spring F_x/k_t",
+                          out.sticking ? x : Real(-fx * scale / kt), argument_rule::finite, pol);
+  const Real sy = checked(function, "the rewritten spring F_y/k_t",
+                          out.sticking ? y : Real(-fy * scale / kt), argument_rule::finite, pol);
+  const Real sphi = checked(function, "the rewritten spring T/k_w",
+                            out.sticking ? phi : Real(-torque / kw), argument_rule::finite, pol);
+  if (detail::any_reported(sx, sy, sphi)) {
+    const Real bad = sx + sy + sphi;
+    detail::set<0>(out.force, bad);
+    detail::set<1>(out.force, bad);
+    out.torque = out.ratio = bad;
+    return out;
+  }
+  detail::set<0>(out.force, fx * scale);
+  detail::set<1>(out.force, fy * scale);
+  out.torque = torque;
+  detail::set<0>(history.displacement, sx);
+  detail::set<1>(history.displacement, sy);
+  history.twist = sphi;
+  if (!out.sticking && !(boost::math::isnan)(cap.ratio)) history.ratio = cap.ratio;
+  return out;
+}
+
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_SPRING_FRICTION_HPP
