@@ -26,6 +26,7 @@
 
 #include <spinslide/contact_inputs.hpp>
 #include <spinslide/detail/checks.hpp>
+#include <spinslide/detail/product.hpp>
 #include <spinslide/detail/vector_access.hpp>
 #include <spinslide/limit_set.hpp>
 #include <spinslide/planar_metric.hpp>
@@ -79,12 +80,15 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
   const Real a = patch.radius, n = patch.normal, mu = patch.friction;
   const Real s0 = checked(function, "start", start.value, argument_rule::non_negative, pol);
   friction_impulse<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN()};
-  if (detail::any_reported(vx, vy, w, a, n, mu, s0)) {
-    detail::set<0>(out.linear, out.ratio);
-    detail::set<1>(out.linear, out.ratio);
-    out.angular = out.ratio;
+  // Every output NaN where a check reported an error through a policy that
+  // does not throw.
+  auto reported = [&out](Real bad) {
+    detail::set<0>(out.linear, bad);
+    detail::set<1>(out.linear, bad);
+    out.angular = out.ratio = bad;
     return out;
-  }
+  };
+  if (detail::any_reported(vx, vy, w, a, n, mu, s0)) return reported(out.ratio);
   // The impulse that stops the contact, z = −W⁻¹s, and the set μΛ·S·L₃ with
   // S = diag(1, 1, a): in the limit set's units ẑ = S⁻¹z/(μΛ), in the metric
   // SWS (inverse S⁻¹W⁻¹S⁻¹), both positive definite since W is.
@@ -95,12 +99,8 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
                 pol);
   const Real load = checked(function, "contact.normal*contact.friction", Real(mu * n),
                             argument_rule::finite, pol);
-  if (detail::any_reported(stop[0], stop[1], stop[2], load)) {
-    detail::set<0>(out.linear, load + stop[0] + stop[1] + stop[2]);
-    detail::set<1>(out.linear, load + stop[0] + stop[1] + stop[2]);
-    out.angular = load + stop[0] + stop[1] + stop[2];
-    return out;
-  }
+  if (detail::any_reported(stop[0], stop[1], stop[2], load))
+    return reported(load + stop[0] + stop[1] + stop[2]);
   if (load == 0 || (vx == 0 && vy == 0 && w == 0)) {
     out.sticking = vx == 0 && vy == 0 && w == 0;
     if (!out.sticking) out.ratio = std::hypot(vx, vy) / (a * std::fabs(w));
@@ -124,15 +124,11 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
                           sqrt(std::numeric_limits<Real>::epsilon()) <=
                       1;
   if (!surely && !detail::well_conditioned(metric, inverse)) {
-    const Real bad = detail::raise_argument_error(
+    return reported(detail::raise_argument_error(
         function, "contact.radius",
         "one for which the inverse mass in the limit set's units, diag(1, 1, a) W diag(1, 1, a), "
         "has a condition number within 1/sqrt(epsilon) (6.7e7 in double)",
-        a, pol);
-    detail::set<0>(out.linear, bad);
-    detail::set<1>(out.linear, bad);
-    out.angular = out.ratio = bad;
-    return out;
+        a, pol));
   }
   // (Divided by a, then by the load: μΛa itself may be subnormal.)
   const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / a / load};
@@ -142,7 +138,7 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
   out.ratio = r.ratio;
   detail::set<0>(out.linear, r.sticking ? stop[0] : Real(load * r.point.force_x));
   detail::set<1>(out.linear, r.sticking ? stop[1] : Real(load * r.point.force_y));
-  out.angular = r.sticking ? stop[2] : Real(load * (a * r.point.torque));
+  out.angular = r.sticking ? stop[2] : detail::product(load, a, r.point.torque);
   return out;
 }
 

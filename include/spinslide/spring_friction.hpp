@@ -22,6 +22,7 @@
 
 #include <spinslide/contact_inputs.hpp>
 #include <spinslide/detail/checks.hpp>
+#include <spinslide/detail/product.hpp>
 #include <spinslide/detail/vector_access.hpp>
 #include <spinslide/limit_set.hpp>
 
@@ -105,12 +106,15 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
   const Real start =
       checked(function, "history.ratio", history.ratio, argument_rule::non_negative, pol);
   spring_friction<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN()};
-  if (detail::any_reported(x, y, phi, kt, kw, a, n, mu, start)) {
-    detail::set<0>(out.force, out.ratio);
-    detail::set<1>(out.force, out.ratio);
-    out.torque = out.ratio;
+  // Every output NaN (and the history as it was) where a check reported an
+  // error through a policy that does not throw.
+  auto reported = [&out](Real bad) {
+    detail::set<0>(out.force, bad);
+    detail::set<1>(out.force, bad);
+    out.torque = out.ratio = bad;
     return out;
-  }
+  };
+  if (detail::any_reported(x, y, phi, kt, kw, a, n, mu, start)) return reported(out.ratio);
   // The trial state, and its magnitudes in the limit set's units.
   // The springs' trial force and torque, which must not overflow.
   const Real fx =
@@ -121,12 +125,7 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
       checked(function, "the trial torque -k_w phi", Real(-kw * phi), argument_rule::finite, pol);
   const Real f = checked(function, "the trial force's magnitude", Real(std::hypot(fx, fy)),
                          argument_rule::finite, pol);
-  if (detail::any_reported(fx, fy, t, f)) {
-    detail::set<0>(out.force, f + fx + fy + t);
-    detail::set<1>(out.force, f + fx + fy + t);
-    out.torque = f + fx + fy + t;
-    return out;
-  }
+  if (detail::any_reported(fx, fy, t, f)) return reported(f + fx + fy + t);
   const Real load = mu * n;
   limit_projection<Real> cap{0, 0, f == 0 && t == 0, std::numeric_limits<Real>::quiet_NaN()};
   if (load > 0) {
@@ -139,7 +138,7 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
   // the torque's sign (the metric is isotropic in the plane) and rewrites
   // the springs.
   const Real scale = out.sticking ? Real(1) : f > 0 ? Real(cap.force * load / f) : Real(0);
-  const Real torque = out.sticking ? t : std::copysign(load * (a * cap.torque), t);
+  const Real torque = out.sticking ? t : std::copysign(detail::product(load, a, cap.torque), t);
   // The springs that hold the result (finite: a spring too soft for the
   // capped force, F/k beyond the largest value, is a domain error and the
   // history is left as it was).
@@ -149,13 +148,7 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
                           out.sticking ? y : Real(-fy * scale / kt), argument_rule::finite, pol);
   const Real sphi = checked(function, "the rewritten spring T/k_w",
                             out.sticking ? phi : Real(-torque / kw), argument_rule::finite, pol);
-  if (detail::any_reported(sx, sy, sphi)) {
-    const Real bad = sx + sy + sphi;
-    detail::set<0>(out.force, bad);
-    detail::set<1>(out.force, bad);
-    out.torque = out.ratio = bad;
-    return out;
-  }
+  if (detail::any_reported(sx, sy, sphi)) return reported(sx + sy + sphi);
   detail::set<0>(out.force, fx * scale);
   detail::set<1>(out.force, fy * scale);
   out.torque = torque;
