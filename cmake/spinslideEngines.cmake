@@ -1,5 +1,6 @@
-# The engine adapters' targets (docs/engines.md): spinslide::mujoco and
-# spinslide::bullet, each defined only when its engine is found.  Used by the
+# The engine adapters' targets (docs/engines.md): spinslide::mujoco,
+# spinslide::bullet and spinslide::box2d, each defined only when its engine
+# is found.  Used by the
 # build tree (CMakeLists.txt) and installed beside spinslideConfig.cmake, so
 # that find_package(spinslide) defines them the same way.
 #
@@ -10,12 +11,20 @@
 # Bullet's double-precision libraries (Debian: libbullet-dev ships both;
 # BulletConfig-float64.cmake) and defines BT_USE_DOUBLE_PRECISION, as Bullet's
 # own package asks; set SPINSLIDE_BULLET_SINGLE to link the float build.
+# spinslide::box2d links Box2D's box2d::box2d (Debian: libbox2d-dev).
 function(spinslide_engine_targets core)
   if(NOT TARGET spinslide::mujoco)
     find_package(mujoco CONFIG QUIET)
     if(TARGET mujoco::mujoco)
       add_library(spinslide::mujoco INTERFACE IMPORTED GLOBAL)
       target_link_libraries(spinslide::mujoco INTERFACE ${core} mujoco::mujoco)
+    endif()
+  endif()
+  if(NOT TARGET spinslide::box2d)
+    find_package(box2d CONFIG QUIET)
+    if(TARGET box2d::box2d)
+      add_library(spinslide::box2d INTERFACE IMPORTED GLOBAL)
+      target_link_libraries(spinslide::box2d INTERFACE ${core} box2d::box2d)
     endif()
   endif()
   if(NOT TARGET spinslide::bullet)

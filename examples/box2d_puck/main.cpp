@@ -4,8 +4,8 @@
 // A puck (a disk, 5 cm radius, γ = 1/2) thrown sliding and spinning on a
 // table, in the Box2D physics engine (top-down, no gravity in the engine;
 // the table's normal force is m g).  Two pucks side by side:
-//   A: friction from spinslide's contact law, applied each step as a force
-//      and a torque (ApplyForceToCenter, ApplyTorque);
+//   A: spinslide's coupled friction (spinslide::box2d::table_friction: the
+//      velocity-level law, an impulse before each step; exact stick);
 //   B: Box2D's own b2FrictionJoint to a static ground body, with
 //      maxForce = μmg and maxTorque = μmg⟨r⟩R (the uncoupled caps).
 // Puck A stops sliding and spinning together with v/(Rω) → ε₀ = 0.653;
@@ -13,6 +13,7 @@
 //   ./build/release/examples/box2d_puck [output-directory]
 // writes box2d_puck.csv and, with gnuplot, box2d_puck.png there.
 #include <box2d/box2d.h>
+#include <spinslide/engines/box2d.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include "../gnuplot.hpp"
@@ -70,15 +71,12 @@ int main(int argc, char** argv) {
   jd.maxTorque = static_cast<float>(mu * m * g * R * 2.0 / 3.0);
   world.CreateJoint(&jd);
 
-  // The regularization scale must be resolved by the time step: the friction
-  // changes a speed by μg·dt per step, so v_s = 2μg·dt (docs/contact.md).
-  const spinslide::contact_law<> law(spinslide::uniform_disk<>(),
-                                     spinslide::velocity_scale<double>{2 * mu * g * dt});
-  // The patch radius, the normal force and μ, each named by its type (a swap
-  // does not compile).
-  const spinslide::force_contact<double> contact{spinslide::patch_radius<double>{R},
-                                                 spinslide::normal_force<double>{m * g},
-                                                 spinslide::friction_coefficient<double>{mu}};
+  // snippet begin
+  spinslide::box2d::table_friction table(spinslide::box2d::gravity{g});
+  table.add(a, spinslide::engines::pair_friction(spinslide::uniform_disk<>(),
+                                                 spinslide::patch_radius<double>{R},
+                                                 spinslide::friction_coefficient<double>{mu}));
+  // snippet end
 
   const std::string csv = out + "/box2d_puck.csv";
   FILE* f = spinslide_examples::open_output(csv, "box2d_puck");
@@ -103,11 +101,7 @@ int main(int argc, char** argv) {
     state(a, la);
     state(b, lb);
     std::fprintf(f, "\n");
-    // Puck A: spinslide's coupled law.
-    const b2Vec2 va = a->GetLinearVelocity();
-    const auto fr = law(va, static_cast<double>(a->GetAngularVelocity()), contact);
-    a->ApplyForceToCenter(fr.force, true);
-    a->ApplyTorque(static_cast<float>(fr.torque), true);
+    table.apply(dt);  // puck A: spinslide's coupled friction over this step
     world.Step(static_cast<float>(dt), 8, 3);
   }
   std::fclose(f);
@@ -121,7 +115,7 @@ int main(int argc, char** argv) {
       "(initial v/(R omega) = %.2f), dt = %.4f s\n",
       R, m, gamma, mu, v0, w0, v0 / (R * w0), dt);
   std::printf(
-      "A (spinslide contact law): sliding stops at %.3f s, spinning at %.3f s, "
+      "A (spinslide::box2d, coupled): sliding stops at %.3f s, spinning at %.3f s, "
       "v/(R omega) at the stop = %.4f (eps0 = %.4f)\n",
       la.slide_stop, la.spin_stop, la.ratio_late, e0);
   std::printf("  spinslide's exact integration of the same throw stops at %.4f s, eps -> %.4f\n",

@@ -267,6 +267,124 @@ bool compare_throw(const throw_case& c, std::size_t index, double gamma, const o
   return ok;
 }
 
+// The billiard ball (R = 28.6 mm, 0.17 kg, μ = 0.2 on cloth) thrown sliding at
+// 1 m/s with side spin 20 rad/s about the vertical, for 1 s.
+struct ball_log {
+  std::vector<double> time, slip, spin;  // contact slip speed [m/s], side spin [rad/s]
+  double rolls_at = nan;                 // first time the slip is below 1e-4 m/s
+  double spin_at_roll = nan;             // side spin then
+  double patch = nan;                    // the plug-in's patch radius at rest [m]
+};
+
+constexpr double ball_radius = 0.0286, ball_mass = 0.17, ball_mu = 0.2;
+
+std::string ball_xml(int condim, double torsional) {
+  char xml[700];
+  std::snprintf(xml, sizeof xml,
+                "<mujoco><option timestep='1e-4' solver='Newton' integrator='Euler' "
+                "cone='elliptic'/><default><geom condim='%d' friction='%g %g 0'/></default>"
+                "<worldbody><geom name='floor' type='plane' size='5 5 0.1'/>"
+                "<body name='ball' pos='0 0 %g'><freejoint/>"
+                "<geom name='ball' type='sphere' size='%g' mass='%g'/></body>"
+                "</worldbody></mujoco>",
+                condim, ball_mu, torsional, ball_radius, ball_radius, ball_mass);
+  return xml;
+}
+
+// One ball run: MuJoCo's own friction (condim 4, elliptic cone, torsional
+// coefficient μ(3π/16)a) when `torsional` > 0, else spinslide's Hertz law (a = √(Rδ)).
+ball_log run_ball(double torsional) {
+  const auto model = mujoco_scene::load(ball_xml(torsional > 0 ? 4 : 1, torsional));
+  const mujoco_scene::data_ptr data(mj_makeData(model.get()));
+  mjModel* m = model.get();
+  mjData* d = data.get();
+  std::unique_ptr<spinslide::mujoco::coupled_friction> coupled;
+  if (torsional <= 0) {
+    coupled = std::make_unique<spinslide::mujoco::coupled_friction>(m);
+    coupled->couple(spinslide::mujoco::geom_name{"ball"}, spinslide::mujoco::geom_name{"floor"},
+                    spinslide::engines::pair_friction(
+                        spinslide::hertz<>(), spinslide::engines::hertz_radius{ball_radius},
+                        spinslide::friction_coefficient<double>{ball_mu}));
+  }
+  auto step = [&] {
+    if (coupled)
+      coupled->step(d);
+    else
+      mj_step(m, d);
+  };
+  for (int i = 0; i < 5000; ++i) step();  // settle
+  ball_log log;
+  if (coupled) log.patch = coupled->report(0).patch_radius;
+  d->qvel[0] = 1.0;
+  d->qvel[5] = 20.0;  // body frame; the ball has not turned yet
+  d->time = 0;
+  for (int i = 0; i <= 10000; ++i) {
+    // The contact point's velocity: v + ω × (0, 0, -R), ω in the world frame.
+    const mjtNum* q = d->qvel;
+    const mjtNum* rot = d->xmat + 9;
+    std::array<double, 3> w{};
+    for (std::size_t k = 0; k < 3; ++k)
+      w[k] = rot[3 * k] * q[3] + rot[3 * k + 1] * q[4] + rot[3 * k + 2] * q[5];
+    const double slip = std::hypot(q[0] - w[1] * ball_radius, q[1] + w[0] * ball_radius);
+    log.time.push_back(d->time);
+    log.slip.push_back(slip);
+    log.spin.push_back(w[2]);
+    if (std::isnan(log.rolls_at) && slip < 1e-4) {
+      log.rolls_at = d->time;
+      log.spin_at_roll = w[2];
+    }
+    step();
+  }
+  return log;
+}
+
+// The ball in both models: a table row each, a CSV and a figure.
+void compare_ball(const std::string& out) {
+  const ball_log plugin = run_ball(0);
+  // MuJoCo's torsional coefficient: the pure-spin torque over N, μ(3π/16)a.
+  const double torsional = ball_mu * 3 * 3.14159265358979323846 / 16 * plugin.patch;
+  const ball_log native = run_ball(torsional);
+  FILE* table = spinslide_examples::open_output(out + "/mujoco_ball.md", "mujoco_disk");
+  FILE* csv = spinslide_examples::open_output(out + "/mujoco_ball.csv", "mujoco_disk");
+  if (!table || !csv) return;
+  std::fprintf(table,
+               "| model | rolls at [s] | side spin then [rad/s] | side spin at 1 s [rad/s] |\n"
+               "|---|---|---|---|\n");
+  std::printf(
+      "billiard ball: R = %.1f mm, %.2f kg, mu = %.1f, v0 = 1 m/s sliding, side spin 20 "
+      "rad/s; Hertz patch a = sqrt(R delta) = %.3f mm at rest\n",
+      1e3 * ball_radius, ball_mass, ball_mu, 1e3 * plugin.patch);
+  auto row = [&](const char* name, const ball_log& l) {
+    std::fprintf(table, "| %s | %.4f | %.3f | %.3f |\n", name, l.rolls_at, l.spin_at_roll,
+                 l.spin.back());
+    std::printf("  %-52s rolls at %.4f s, side spin then %.3f rad/s, at 1 s %.3f rad/s\n", name,
+                l.rolls_at, l.spin_at_roll, l.spin.back());
+  };
+  row("spinslide in MuJoCo (Hertz, coupled)", plugin);
+  char name[96];
+  std::snprintf(name, sizeof name, "MuJoCo condim 4, torsional mu(3pi/16)a = %.2e m", torsional);
+  row(name, native);
+  std::fclose(table);
+  std::fprintf(csv, "# t slip_spinslide spin_spinslide slip_native spin_native\n");
+  for (std::size_t i = 0; i < plugin.time.size(); i += 10)
+    std::fprintf(csv, "%.4f %.6e %.6e %.6e %.6e\n", plugin.time[i], plugin.slip[i], plugin.spin[i],
+                 native.slip[i], native.spin[i]);
+  std::fclose(csv);
+  spinslide_examples::plot(
+      out, "mujoco_ball.gp",
+      "set terminal pngcairo size 1100,420 font ',10'\n"
+      "set output 'mujoco_ball.png'\n"
+      "set multiplot layout 1,2\n"
+      "set xlabel 't [s]'; set key right top\n"
+      "set ylabel 'slip at the contact [m/s]'\n"
+      "plot 'mujoco_ball.csv' u 1:2 w l lw 2 lc 'blue' t 'spinslide in MuJoCo', '' u 1:4 w l lw 2 "
+      "lc '#d55e00' t 'MuJoCo condim 4'\n"
+      "set ylabel 'side spin [rad/s]'\n"
+      "plot 'mujoco_ball.csv' u 1:3 w l lw 2 lc 'blue' t 'spinslide in MuJoCo', '' u 1:5 w l lw 2 "
+      "lc '#d55e00' t 'MuJoCo condim 4'\n"
+      "unset multiplot\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -338,6 +456,7 @@ int main(int argc, char** argv) try {
   const bool figure = spinslide_examples::plot(out, "mujoco_disk.gp", script);
   std::printf("wrote %s/mujoco_disk.md, %s/mujoco_disk.csv%s\n", out.c_str(), out.c_str(),
               figure ? " and mujoco_disk.png" : " (no gnuplot: no figure)");
+  compare_ball(out);
   std::printf("spinslide in MuJoCo meets every check: %s\n", pass ? "yes" : "NO");
   return pass ? 0 : 1;
 } catch (const std::exception& e) {

@@ -2,10 +2,22 @@
 // FetchContent packaging tests. It only checks exact limits that are part of
 // the specification plus physical bounds, never tabulated interior values.
 #include <spinslide/spinslide.hpp>
+// Where the consumer found an engine, its adapter's target must exist and
+// compile (the consumers' CMakeLists define these).
+#ifdef SPINSLIDE_CONSUME_MUJOCO
+#include <spinslide/engines/mujoco.hpp>
+#endif
+#ifdef SPINSLIDE_CONSUME_BULLET
+#include <spinslide/engines/bullet.hpp>
+#endif
+#ifdef SPINSLIDE_CONSUME_BOX2D
+#include <spinslide/engines/box2d.hpp>
+#endif
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 
 namespace {
 
@@ -20,7 +32,34 @@ void check(bool ok, const char* what) {
 
 }  // namespace
 
+// The adapters that were linked: each refuses a null argument.
+void check_engines() {
+#ifdef SPINSLIDE_CONSUME_MUJOCO
+  bool refused = false;
+  try {
+    spinslide::mujoco::coupled_friction f(nullptr);
+  } catch (const std::invalid_argument&) {
+    refused = true;
+  }
+  check(refused, "spinslide::mujoco::coupled_friction refuses a null model");
+#endif
+#ifdef SPINSLIDE_CONSUME_BULLET
+  spinslide::bullet::coupled_friction_solver solver;
+  check(!solver.coupled(nullptr, nullptr), "spinslide::bullet: nothing coupled");
+#endif
+#ifdef SPINSLIDE_CONSUME_BOX2D
+  bool refused_gravity = false;
+  try {
+    spinslide::box2d::table_friction table(spinslide::box2d::gravity{-1});
+  } catch (const std::domain_error&) {
+    refused_gravity = true;
+  }
+  check(refused_gravity, "spinslide::box2d::table_friction refuses g < 0");
+#endif
+}
+
 int main() {
+  check_engines();
   const double pi = 3.141592653589793238462643383279502884;
   const double inf = std::numeric_limits<double>::infinity();
 

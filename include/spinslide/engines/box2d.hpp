@@ -1,0 +1,104 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+
+/// \file box2d.hpp
+/// spinslide's coupled friction for bodies lying on a table in a top-down
+/// Box2D world (2.4; docs/engines.md, "Box2D").
+///
+///     spinslide::box2d::table_friction table(spinslide::box2d::gravity{9.81});
+///     table.add(puck, spinslide::engines::pair_friction(...));
+///     for (...) { table.apply(dt); world.Step(dt, 8, 3); }
+///
+/// A top-down world has no normal contact with the table: its normal force
+/// is the body's weight m g.  Before each step, apply() gives each added
+/// body the impulse of the velocity-level law (impulse_friction.hpp) over the
+/// step, with the body's own inverse mass and inertia about its centre of
+/// mass (where the patch is centred), and Λ = m g Δt: exact stick, slip on
+/// the coupled limit set, no velocity scale.  It sees the velocity the body
+/// has when it is called: forces that the step itself will apply (collisions,
+/// ApplyForce) act after it, as friction of the next step sees them.
+#ifndef SPINSLIDE_ENGINES_BOX2D_HPP
+#define SPINSLIDE_ENGINES_BOX2D_HPP
+
+#include <box2d/box2d.h>
+#include <spinslide/engines/pair_friction.hpp>
+
+#include <array>
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+namespace spinslide {
+namespace box2d {
+
+/// The table's gravity g [m/s²] (finite, > 0), which sets the normal force m g.
+struct gravity {
+  /// Explicit: a plain number does not convert.
+  explicit constexpr gravity(double g) : value(g) {}
+  double value;  ///< g
+};
+
+/// The friction of bodies lying on a table, for a top-down Box2D world (see
+/// the file's comment).
+class table_friction {
+ public:
+  /// A table under gravity g (finite and > 0; otherwise std::domain_error).
+  explicit table_friction(gravity g)
+      : gravity_(detail::checked_constructor_argument("spinslide::box2d::table_friction", "gravity",
+                                                      g.value,
+                                                      detail::argument_rule::finite_positive)) {}
+
+  /// Adds `body` (a dynamic body with mass; it must outlive its use here)
+  /// with `friction` (its patch: pair_friction.hpp); returns its index for
+  /// sticking().  A null or massless body is std::invalid_argument.
+  std::size_t add(b2Body* body, const engines::pair_friction& friction) {
+    if (body == nullptr || !(body->GetMass() > 0))
+      throw std::invalid_argument(
+          "spinslide::box2d::table_friction::add: a dynamic body with mass is needed");
+    bodies_.push_back({body, friction, false});
+    return bodies_.size() - 1;
+  }
+
+  /// Applies each body's friction impulse for a step of `dt` seconds (> 0).
+  void apply(double dt) {
+    if (!(dt > 0))
+      throw std::invalid_argument("spinslide::box2d::table_friction::apply: dt must be > 0");
+    for (auto& b : bodies_) apply_one(b, dt);
+  }
+
+  /// True if body `index`'s last impulse stopped it exactly.
+  bool sticking(std::size_t index) const { return bodies_.at(index).sticking; }
+
+ private:
+  struct entry {
+    b2Body* body;
+    engines::pair_friction friction;
+    bool sticking;
+  };
+
+  void apply_one(entry& e, double dt) const {
+    b2Body& b = *e.body;
+    const double m = b.GetMass();
+    const b2Vec2 c = b.GetLocalCenter();
+    // GetInertia() is about the body's origin; W needs it about the centre.
+    const double inertia = static_cast<double>(b.GetInertia()) - m * (c.x * c.x + c.y * c.y);
+    const planar_metric<double> w(
+        detail::matrix3<double>{{{1 / m, 0, 0}, {0, 1 / m, 0}, {0, 0, 1 / inertia}}});
+    const b2Vec2 v = b.GetLinearVelocity();
+    const auto p = e.friction.impulse({v.x, v.y}, b.GetAngularVelocity(), w,
+                                      normal_impulse<double>{m * gravity_ * dt}, 0.0);
+    e.sticking = p.sticking;
+    b.ApplyLinearImpulseToCenter(
+        b2Vec2(static_cast<float>(p.linear[0]), static_cast<float>(p.linear[1])), true);
+    b.ApplyAngularImpulse(static_cast<float>(p.angular), true);
+  }
+
+  double gravity_;
+  std::vector<entry> bodies_;
+};
+
+}  // namespace box2d
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_ENGINES_BOX2D_HPP

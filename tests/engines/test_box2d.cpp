@@ -1,0 +1,113 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//
+// spinslide::box2d::table_friction: its input checks, and a puck in a
+// top-down Box2D world against closed forms from outside the library (a pull
+// below and above μmg; a spin-only and a slide-only throw).
+#include <box2d/box2d.h>
+#include <gtest/gtest.h>
+#include <spinslide/engines/box2d.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace {
+
+using spinslide::friction_coefficient;
+using spinslide::patch_radius;
+using spinslide::box2d::gravity;
+using spinslide::box2d::table_friction;
+using spinslide::engines::pair_friction;
+
+constexpr double radius = 0.05, mass = 0.016, mu = 0.3, g = 9.81, dt = 1e-3;
+
+pair_friction puck_friction() {
+  return pair_friction(spinslide::uniform_disk<>(), patch_radius<double>{radius},
+                       friction_coefficient<double>{mu});
+}
+
+// A world without gravity (top-down) and one puck: R = 5 cm, 16 g.
+struct puck_world {
+  b2World world{b2Vec2(0.0f, 0.0f)};
+  b2Body* puck;
+  puck_world() {
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    puck = world.CreateBody(&def);
+    b2CircleShape circle;
+    circle.m_radius = static_cast<float>(radius);
+    b2FixtureDef fixture;
+    fixture.shape = &circle;
+    fixture.density = static_cast<float>(mass / (3.14159265358979323846 * radius * radius));
+    puck->CreateFixture(&fixture);
+  }
+};
+
+}  // namespace
+
+TEST(Box2dAdapter, RefusesMisuse) {
+  EXPECT_THROW(table_friction(gravity{0.0}), std::domain_error);
+  EXPECT_THROW(table_friction(gravity{-9.81}), std::domain_error);
+  table_friction table(gravity{g});
+  EXPECT_THROW(table.add(nullptr, puck_friction()), std::invalid_argument);
+  puck_world w;
+  b2BodyDef fixed;
+  b2Body* ground = w.world.CreateBody(&fixed);  // static: no mass
+  EXPECT_THROW(table.add(ground, puck_friction()), std::invalid_argument);
+  table.add(w.puck, puck_friction());
+  EXPECT_THROW(table.apply(0.0), std::invalid_argument);
+  EXPECT_THROW(table.apply(-dt), std::invalid_argument);
+  EXPECT_THROW(static_cast<void>(table.sticking(1)), std::out_of_range);
+}
+
+TEST(Box2dAdapter, HoldsBelowTheFrictionForceAndSlidesAboveIt) {
+  // A steady pull F: below μmg the puck stays (exact stick, no creep); above
+  // it, it accelerates at F/m − μg.  The pull is applied as an impulse
+  // before the friction, which then sees it.
+  for (const double fraction : {0.9, 1.5}) {
+    puck_world w;
+    table_friction table(gravity{g});
+    table.add(w.puck, puck_friction());
+    const double pull = fraction * mu * mass * g;
+    for (int i = 0; i < 1000; ++i) {
+      w.puck->ApplyLinearImpulseToCenter(b2Vec2(static_cast<float>(pull * dt), 0.0f), true);
+      table.apply(dt);
+      w.world.Step(static_cast<float>(dt), 8, 3);
+    }
+    const double x = w.puck->GetPosition().x, v = w.puck->GetLinearVelocity().x;
+    if (fraction < 1) {
+      EXPECT_LT(std::fabs(x), 1e-6) << "creep below the friction force";
+      EXPECT_TRUE(table.sticking(0));
+    } else {
+      const double a = pull / mass - mu * g;
+      EXPECT_NEAR(v, a * 1.0, 1e-4 * a);  // float velocities: ~1e-7 per step
+      EXPECT_FALSE(table.sticking(0));
+    }
+  }
+}
+
+TEST(Box2dAdapter, PureSpinAndPureSlideStopAtTheirClosedForms) {
+  // Pure spin: T = μmg(2/3)R, so ω stops at ω0 I/T = 3ω0 R γ/(2μg) (γ = 1/2).
+  // Pure slide: v stops at v0/(μg).
+  for (const bool spin : {true, false}) {
+    puck_world w;
+    table_friction table(gravity{g});
+    table.add(w.puck, puck_friction());
+    const double v0 = 1.0, w0 = 20.0;
+    if (spin)
+      w.puck->SetAngularVelocity(static_cast<float>(w0));
+    else
+      w.puck->SetLinearVelocity(b2Vec2(static_cast<float>(v0), 0.0f));
+    int steps = 0;
+    while (steps < 2000 && (std::fabs(w.puck->GetAngularVelocity()) > 0.0f ||
+                            w.puck->GetLinearVelocity().Length() > 0.0f)) {
+      table.apply(dt);
+      w.world.Step(static_cast<float>(dt), 8, 3);
+      ++steps;
+    }
+    const double expected = spin ? 3 * w0 * radius * 0.5 / (2 * mu * g) : v0 / (mu * g);
+    EXPECT_NEAR(steps * dt, expected, 1.5 * dt) << (spin ? "spin" : "slide");
+    EXPECT_EQ(w.puck->GetAngularVelocity(), 0.0f);
+    EXPECT_EQ(w.puck->GetLinearVelocity().Length(), 0.0f);
+  }
+}
