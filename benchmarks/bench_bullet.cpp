@@ -21,6 +21,7 @@
 #include <spinslide/engines/bullet.hpp>
 #include <spinslide/spinslide.hpp>
 
+#include "../examples/bullet_coin/scene.hpp"
 #include "ratio_reporter.hpp"
 
 #include <cmath>
@@ -32,55 +33,33 @@ namespace {
 enum class friction { native, none, spinslide };
 
 constexpr int coins = 64, rethrow_every = 1000;
-constexpr double dt = 1e-5, g = 9.81;
-constexpr double coin_radius = 0.012, coin_half_thickness = 0.001, coin_mass = 0.0071, mu = 0.3;
+constexpr double dt = 1e-5, coin_mass = 0.0071;
+using bullet_scene::coin_half_thickness;
+using bullet_scene::coin_radius;
 
-btTransform at(const btVector3& origin) {
-  btTransform t;
-  t.setIdentity();
-  t.setOrigin(origin);
-  return t;
-}
-
-// The example's scene: a static box whose top face is z = 0 (friction 1:
-// Bullet multiplies the bodies' friction), the convex-convex multipoint
-// iterations (3 to 4 points under each coin), and 64 coins on an 8 × 8 grid
-// 0.2 m apart, released at rest and settled for 100 steps.
+// The example's scene (examples/bullet_coin/scene.hpp; its table's top face
+// centred at (0.7, 0.7, 0)) and 64 coins on an 8 × 8 grid 0.2 m apart,
+// released at rest and settled for 100 steps.
 class scene {
  public:
   explicit scene(friction kind)
-      : dispatcher_(multipoint(config_)),
-        solver_(kind == friction::spinslide ? new spinslide::bullet::coupled_friction_solver
-                                            : new btSequentialImpulseConstraintSolver),
-        world_(&dispatcher_, &broadphase_, solver_.get(), &config_),
-        table_shape_(btVector3(3, 3, 0.05)),
-        coin_shape_(btVector3(coin_radius, coin_radius, coin_half_thickness)),
-        table_(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &table_shape_)) {
-    world_.setGravity(btVector3(0, 0, -g));
-    table_.setWorldTransform(at(btVector3(0.7, 0.7, -0.05)));
-    table_.setFriction(1);
-    world_.addRigidBody(&table_);
-    btVector3 inertia(0, 0, 0);
-    coin_shape_.calculateLocalInertia(coin_mass, inertia);
+      : coin_shape_(btVector3(coin_radius, coin_radius, coin_half_thickness)),
+        world_(kind == friction::spinslide ? bullet_scene::friction::plugin
+                                           : bullet_scene::friction::native,
+               btVector3(0.7, 0.7, 0)) {
     for (int i = 0; i < coins; ++i) {
-      coins_.push_back(std::make_unique<btRigidBody>(
-          btRigidBody::btRigidBodyConstructionInfo(coin_mass, nullptr, &coin_shape_, inertia)));
-      btRigidBody* c = coins_.back().get();
-      c->setWorldTransform(at(btVector3(0.2 * (i % 8), 0.2 * (i / 8), coin_half_thickness)));
-      c->setActivationState(DISABLE_DEACTIVATION);
-      set_friction(kind, c);
-      world_.addRigidBody(c);
+      btRigidBody* c = world_.add(&coin_shape_, coin_mass,
+                                  btVector3(0.2 * (i % 8), 0.2 * (i / 8), coin_half_thickness));
+      if (kind == friction::none)
+        c->setFriction(0);
+      else
+        bullet_scene::set_coin_friction(world_, c);
+      coins_.push_back(c);
     }
     for (int i = 0; i < 100; ++i) step();
   }
-  scene(const scene&) = delete;
-  scene& operator=(const scene&) = delete;
-  ~scene() {
-    for (auto& c : coins_) world_.removeRigidBody(c.get());
-    world_.removeRigidBody(&table_);
-  }
 
-  void step() { world_.stepSimulation(dt, 1, dt); }
+  void step() { world_.step(dt); }
 
   // Sets every coin sliding and spinning, each a little differently.
   void throw_coins() {
@@ -98,7 +77,7 @@ class scene {
   };
   state save() const {
     state s;
-    for (const auto& c : coins_) {
+    for (const btRigidBody* c : coins_) {
       s.pose.push_back(c->getCenterOfMassTransform());
       s.v.push_back(c->getLinearVelocity());
       s.w.push_back(c->getAngularVelocity());
@@ -116,46 +95,16 @@ class scene {
   // The manifolds with at least one point: the contacts.
   int contacts() {
     int n = 0;
-    for (int i = 0; i < dispatcher_.getNumManifolds(); ++i)
-      if (dispatcher_.getManifoldByIndexInternal(i)->getNumContacts() > 0) ++n;
+    btCollisionDispatcher& d = world_.dispatcher();
+    for (int i = 0; i < d.getNumManifolds(); ++i)
+      if (d.getManifoldByIndexInternal(i)->getNumContacts() > 0) ++n;
     return n;
   }
 
  private:
-  static btDefaultCollisionConfiguration* multipoint(btDefaultCollisionConfiguration& c) {
-    c.setConvexConvexMultipointIterations();
-    return &c;
-  }
-
-  void set_friction(friction kind, btRigidBody* coin) {
-    switch (kind) {
-      case friction::native:
-        coin->setFriction(mu);
-        coin->setSpinningFriction(mu * 2.0 / 3.0 * coin_radius);
-        coin->setRollingFriction(1e-9);  // > 0, or Bullet ignores the spinning friction
-        break;
-      case friction::none:
-        coin->setFriction(0);
-        break;
-      case friction::spinslide:
-        static_cast<spinslide::bullet::coupled_friction_solver*>(solver_.get())
-            ->couple(coin, &table_,
-                     spinslide::engines::pair_friction(
-                         spinslide::uniform_disk<>(), spinslide::patch_radius<double>{coin_radius},
-                         spinslide::friction_coefficient<double>{mu}));
-        break;
-    }
-  }
-
-  btDefaultCollisionConfiguration config_;
-  btCollisionDispatcher dispatcher_;
-  btDbvtBroadphase broadphase_;
-  std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
-  btDiscreteDynamicsWorld world_;
-  btBoxShape table_shape_;
-  btCylinderShapeZ coin_shape_;
-  btRigidBody table_;
-  std::vector<std::unique_ptr<btRigidBody>> coins_;
+  btCylinderShapeZ coin_shape_;  // before world_: outlives the coins
+  bullet_scene::scene world_;
+  std::vector<btRigidBody*> coins_;  // world_'s
 };
 
 void step_the_coins(benchmark::State& state, friction kind, bool moving) {

@@ -23,6 +23,7 @@
 #include <spinslide/spinslide.hpp>
 
 #include "../gnuplot.hpp"
+#include "scene.hpp"
 
 #include <algorithm>
 #include <array>
@@ -35,116 +36,29 @@
 
 namespace {
 
+using bullet_scene::coin_radius;
+using bullet_scene::g;
+using bullet_scene::scene;
+using model = bullet_scene::friction;
+
 constexpr double pi = 3.14159265358979323846;
-constexpr double g = 9.81;
 // The time step: friction changes a speed by μgΔt = 5.9e-5 m/s per step, below
 // 1e-3 of the slowest start speed (0.10 m/s), so that the last sliding step
 // before the stop is at about 1e-3 of the start, where ε is compared; the stop
 // time is then resolved to 2e-5 s, 0.1 % of the shortest stop (0.027 s).
 constexpr double dt = 1e-5;
 
-// The coin.
-constexpr double coin_radius = 0.012, coin_thickness = 0.002, steel = 7850, mu = 0.3;
+// The coin (scene.hpp: R = 12 mm, 2 mm thick, μ = 0.3), of steel.
+constexpr double coin_thickness = 2 * bullet_scene::coin_half_thickness, steel = 7850,
+                 mu = bullet_scene::coin_mu;
 
-enum class model { native, plugin };
+// The scenes (scene.hpp) have their table's top face centred here.
+btVector3 table_top() { return btVector3(1, 1, 0); }
 
-// One Bullet world with a static box whose top face is z = 0 (friction 1, so
-// that a body's friction is the pair's: Bullet multiplies them) and the chosen
-// solver.  The convex-convex multipoint iterations keep 3 to 4 points under
-// the coin (a cylinder on a btStaticPlaneShape gets one new point per step
-// and rocks on two).
-class scene {
- public:
-  explicit scene(model m)
-      : dispatcher_(multipoint(config_)),
-        solver_(m == model::plugin ? new spinslide::bullet::coupled_friction_solver
-                                   : new btSequentialImpulseConstraintSolver),
-        world_(&dispatcher_, &broadphase_, solver_.get(), &config_),
-        table_(btVector3(3, 3, 0.05)),
-        ground_(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &table_)) {
-    world_.setGravity(btVector3(0, 0, -g));
-    btTransform t;
-    t.setIdentity();
-    t.setOrigin(btVector3(1, 1, -0.05));
-    ground_.setWorldTransform(t);
-    ground_.setFriction(1);
-    world_.addRigidBody(&ground_);
-  }
-  scene(const scene&) = delete;
-  scene& operator=(const scene&) = delete;
-  ~scene() {
-    for (auto& b : bodies_) world_.removeRigidBody(b.get());
-    world_.removeRigidBody(&ground_);
-  }
-
-  // Adds a body of `shape` at `origin`, released at rest.
-  btRigidBody* add(btCollisionShape* shape, double mass, const btVector3& origin) {
-    btVector3 inertia;
-    shape->calculateLocalInertia(mass, inertia);
-    bodies_.emplace_back(
-        new btRigidBody(btRigidBody::btRigidBodyConstructionInfo(mass, nullptr, shape, inertia)));
-    btRigidBody* b = bodies_.back().get();
-    btTransform t;
-    t.setIdentity();
-    t.setOrigin(origin);
-    b->setWorldTransform(t);
-    b->setActivationState(DISABLE_DEACTIVATION);  // no sleeping while it creeps
-    world_.addRigidBody(b);
-    return b;
-  }
-  spinslide::bullet::coupled_friction_solver* plugin() {
-    return dynamic_cast<spinslide::bullet::coupled_friction_solver*>(solver_.get());
-  }
-  const btRigidBody* ground() const { return &ground_; }
-  // One step of h (fixedTimeStep = h, maxSubSteps = 1: exactly one step).
-  void step(double h = dt) { world_.stepSimulation(h, 1, h); }
-  // The normal impulse on `body` this step (its manifolds' points) and its
-  // deepest penetration.
-  std::pair<double, double> contact_of(const btRigidBody* body) {
-    double impulse = 0, depth = 0;
-    for (int i = 0; i < dispatcher_.getNumManifolds(); ++i) {
-      const btPersistentManifold* m = dispatcher_.getManifoldByIndexInternal(i);
-      if (m->getBody0() != body && m->getBody1() != body) continue;
-      for (int j = 0; j < m->getNumContacts(); ++j) {
-        const btManifoldPoint& p = m->getContactPoint(j);
-        if (p.getDistance() > m->getContactProcessingThreshold()) continue;
-        impulse += p.m_appliedImpulse;
-        depth = std::max(depth, -static_cast<double>(p.getDistance()));
-      }
-    }
-    return {impulse, depth};
-  }
-
- private:
-  static btDefaultCollisionConfiguration* multipoint(btDefaultCollisionConfiguration& c) {
-    c.setConvexConvexMultipointIterations();
-    return &c;
-  }
-  btDefaultCollisionConfiguration config_;
-  btCollisionDispatcher dispatcher_;
-  btDbvtBroadphase broadphase_;
-  std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
-  btDiscreteDynamicsWorld world_;
-  btBoxShape table_;
-  btRigidBody ground_;
-  std::vector<std::unique_ptr<btRigidBody>> bodies_;
-};
-
-// A coin's shape and friction settings in `s` for model `m`.
-btRigidBody* add_coin(scene& s, btCylinderShapeZ& shape, model m, double mass,
-                      const btVector3& origin) {
+// A coin of `shape` in `s`, with the friction of the scene's model.
+btRigidBody* add_coin(scene& s, btCylinderShapeZ& shape, double mass, const btVector3& origin) {
   btRigidBody* coin = s.add(&shape, mass, origin);
-  if (m == model::native) {
-    coin->setFriction(mu);
-    coin->setSpinningFriction(mu * 2.0 / 3.0 * coin_radius);
-    coin->setRollingFriction(1e-9);  // > 0, or Bullet ignores the spinning friction
-  } else {
-    s.plugin()->couple(
-        coin, s.ground(),
-        spinslide::engines::pair_friction(spinslide::uniform_disk<>(),
-                                          spinslide::patch_radius<double>{coin_radius},
-                                          spinslide::friction_coefficient<double>{mu}));
-  }
+  bullet_scene::set_coin_friction(s, coin);
   return coin;
 }
 
@@ -215,11 +129,11 @@ void summarize(run_log& log, double v0, double rw0, double level) {
 constexpr double level = 1e-3;  // "stopped": below 1e-3 of the start value, and stays there
 
 run_log run_bullet(model m, double v0, double w0, double duration) {
-  scene s(m);
+  scene s(m, table_top());
   btCylinderShapeZ shape(btVector3(coin_radius, coin_radius, coin_thickness / 2));
   const double mass = steel * pi * coin_radius * coin_radius * coin_thickness;
-  btRigidBody* coin = add_coin(s, shape, m, mass, btVector3(0, 0, coin_thickness / 2));
-  for (int i = 0; i < 300; ++i) s.step();  // settle on the table
+  btRigidBody* coin = add_coin(s, shape, mass, btVector3(0, 0, coin_thickness / 2));
+  for (int i = 0; i < 300; ++i) s.step(dt);  // settle on the table
   coin->setLinearVelocity(btVector3(v0, 0, coin->getLinearVelocity().z()));
   coin->setAngularVelocity(btVector3(0, 0, w0));
   run_log log;
@@ -238,7 +152,7 @@ run_log run_bullet(model m, double v0, double w0, double duration) {
     log.x.push_back(coin->getCenterOfMassPosition().x());
     log.y.push_back(coin->getCenterOfMassPosition().y());
     if (i == steps) break;
-    s.step();
+    s.step(dt);
     const double n = s.contact_of(coin).first / (mass * g * dt);
     if (n <= 0) ++log.lost;
     if (i >= 5) log.peak_normal = std::max(log.peak_normal, n);
@@ -295,23 +209,23 @@ double exact_ratio_at(double gamma, double v0, double w0, double stop, double fr
 std::pair<double, double> time_steps(model m, int coins, int steps) {
   double best = INFINITY, contacts = 0;
   for (int repeat = 0; repeat < 3; ++repeat) {
-    scene s(m);
+    scene s(m, table_top());
     btCylinderShapeZ shape(btVector3(coin_radius, coin_radius, coin_thickness / 2));
     const double mass = steel * pi * coin_radius * coin_radius * coin_thickness;
     std::vector<btRigidBody*> all;
     const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(coins))));
     for (int i = 0; i < coins; ++i) {
-      btRigidBody* c = add_coin(s, shape, m, mass,
+      btRigidBody* c = add_coin(s, shape, mass,
                                 btVector3(0.2 * (i % side), 0.2 * (i / side), coin_thickness / 2));
       all.push_back(c);
     }
-    for (int i = 0; i < 100; ++i) s.step();
+    for (int i = 0; i < 100; ++i) s.step(dt);
     for (std::size_t i = 0; i < all.size(); ++i) {
       all[i]->setLinearVelocity(btVector3(0.1 + 0.001 * static_cast<double>(i), 0.05, 0));
       all[i]->setAngularVelocity(btVector3(0, 0, 10.0 - 0.05 * static_cast<double>(i)));
     }
     const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < steps; ++i) s.step();
+    for (int i = 0; i < steps; ++i) s.step(dt);
     const auto stop = std::chrono::steady_clock::now();
     best = std::min(best, std::chrono::duration<double>(stop - start).count() / steps);
     contacts = coins;
@@ -336,7 +250,7 @@ constexpr double ball_patch = 1e-3;
 constexpr double ball_dt = 1e-4;  // s (the ball's motion takes seconds)
 
 ball_log run_ball(model m) {
-  scene s(m);
+  scene s(m, table_top());
   btSphereShape shape(ball_radius);
   btRigidBody* ball = s.add(&shape, ball_mass, btVector3(0, 0, ball_radius));
   if (m == model::native) {
@@ -345,12 +259,12 @@ ball_log run_ball(model m) {
     ball->setSpinningFriction(ball_mu * 3 * pi / 16 * ball_patch);
     ball->setRollingFriction(1e-9);
   } else {
-    s.plugin()->couple(ball, s.ground(),
-                       spinslide::engines::pair_friction(
-                           spinslide::hertz<>(),
-                           spinslide::engines::hertz_radius(
-                               ball_radius, spinslide::patch_radius<double>{ball_patch}),
-                           spinslide::friction_coefficient<double>{ball_mu}));
+    s.plugin().couple(ball, s.table(),
+                      spinslide::engines::pair_friction(
+                          spinslide::hertz<>(),
+                          spinslide::engines::hertz_radius(
+                              ball_radius, spinslide::patch_radius<double>{ball_patch}),
+                          spinslide::friction_coefficient<double>{ball_mu}));
   }
   for (int i = 0; i < 300; ++i) s.step(ball_dt);
   ball->setLinearVelocity(btVector3(1.0, 0, ball->getLinearVelocity().z()));

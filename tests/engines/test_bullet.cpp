@@ -11,13 +11,20 @@
 #include <spinslide/engines/bullet.hpp>
 #include <spinslide/spinslide.hpp>
 
+#include "../../examples/bullet_coin/scene.hpp"
+
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
 namespace {
 
+using bullet_scene::coin_friction;
+using bullet_scene::coin_half_thickness;
+using bullet_scene::coin_radius;
+using bullet_scene::g;
 using spinslide::friction_coefficient;
 using spinslide::patch_radius;
 using spinslide::bullet::coupled_friction_solver;
@@ -25,21 +32,14 @@ using spinslide::engines::hertz_radius;
 using spinslide::engines::pair_friction;
 
 constexpr double pi = 3.14159265358979323846;
-constexpr double g = 9.81;
 
-// The coin of examples/bullet_coin: R = 12 mm, 2 mm thick, 7.1 g, on wood
-// (μ = 0.3), stepped at 1e-5 s.
-constexpr double coin_radius = 0.012, coin_half_thickness = 0.001, coin_mass = 0.0071;
-constexpr double coin_mu = 0.3, coin_dt = 1e-5;
+// The coin of examples/bullet_coin (scene.hpp: R = 12 mm, 2 mm thick, on wood,
+// μ = 0.3), 7.1 g, stepped at 1e-5 s.
+constexpr double coin_mass = 0.0071, coin_mu = bullet_scene::coin_mu, coin_dt = 1e-5;
 // A billiard ball: R = 28.6 mm, 0.17 kg, on cloth (μ = 0.2), stepped at 1e-4 s,
 // with Hertz's patch whose 1 mm minimum decides (Bullet's √(Rδ) is ~1e-9 m).
 constexpr double ball_radius = 0.0286, ball_mass = 0.17, ball_mu = 0.2, ball_dt = 1e-4;
 constexpr double ball_patch = 1e-3;
-
-pair_friction coin_friction() {
-  return pair_friction(spinslide::uniform_disk<>(), patch_radius<double>{coin_radius},
-                       friction_coefficient<double>{coin_mu});
-}
 
 pair_friction ball_friction() {
   return pair_friction(spinslide::hertz<>(),
@@ -47,53 +47,15 @@ pair_friction ball_friction() {
                        friction_coefficient<double>{ball_mu});
 }
 
-btTransform at(const btVector3& origin) {
-  btTransform t;
-  t.setIdentity();
-  t.setOrigin(origin);
-  return t;
-}
-
-// A Bullet world (double precision) with coupled_friction_solver, `gravity`
-// and, unless asked not to, a static box table whose top face is z = 0 (the
-// example's: friction 1, so that a body's friction is the pair's, and the
-// convex-convex multipoint iterations, which keep 3 to 4 points under a
-// coin).  Bodies added never sleep.
-class world {
+// The example's world (scene.hpp) with coupled_friction_solver, `gravity`
+// and, unless asked not to, its table with the top face centred at the
+// origin.
+class world : public bullet_scene::scene {
  public:
   explicit world(const btVector3& gravity = btVector3(0, 0, -g), bool with_table = true)
-      : dispatcher_(multipoint(config_)),
-        world_(&dispatcher_, &broadphase_, &solver_, &config_),
-        table_shape_(btVector3(3, 3, 0.05)),
-        table_(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &table_shape_)) {
-    world_.setGravity(gravity);
-    if (with_table) {
-      table_.setWorldTransform(at(btVector3(0, 0, -0.05)));
-      table_.setFriction(1);
-      world_.addRigidBody(&table_);
-      has_table_ = true;
-    }
-  }
-  world(const world&) = delete;
-  world& operator=(const world&) = delete;
-  ~world() {
-    for (auto& b : bodies_) world_.removeRigidBody(b.get());
-    if (has_table_) world_.removeRigidBody(&table_);
-  }
+      : scene(bullet_scene::friction::plugin,
+              with_table ? std::optional<btVector3>(btVector3(0, 0, 0)) : std::nullopt, gravity) {}
 
-  // A body of `shape` (kept by the world) and `mass` at `origin`, at rest.
-  btRigidBody* add(std::unique_ptr<btCollisionShape> shape, double mass, const btVector3& origin) {
-    btVector3 inertia(0, 0, 0);
-    shape->calculateLocalInertia(mass, inertia);
-    bodies_.push_back(std::make_unique<btRigidBody>(
-        btRigidBody::btRigidBodyConstructionInfo(mass, nullptr, shape.get(), inertia)));
-    shapes_.push_back(std::move(shape));
-    btRigidBody* b = bodies_.back().get();
-    b->setWorldTransform(at(origin));
-    b->setActivationState(DISABLE_DEACTIVATION);
-    world_.addRigidBody(b);
-    return b;
-  }
   btRigidBody* add_coin(const btVector3& origin) {
     return add(std::make_unique<btCylinderShapeZ>(
                    btVector3(coin_radius, coin_radius, coin_half_thickness)),
@@ -103,32 +65,10 @@ class world {
     return add(std::make_unique<btSphereShape>(ball_radius), ball_mass,
                btVector3(0, 0, ball_radius));
   }
-
-  // One Bullet step of h (exactly one: fixedTimeStep = h, maxSubSteps = 1).
-  void step(double h) { world_.stepSimulation(h, 1, h); }
-  void steps(int n, double h) {
-    for (int i = 0; i < n; ++i) step(h);
+  // n steps of coin_dt.
+  void coin_steps(int n) {
+    for (int i = 0; i < n; ++i) step(coin_dt);
   }
-
-  coupled_friction_solver& solver() { return solver_; }
-  btDiscreteDynamicsWorld& dynamics() { return world_; }
-  btRigidBody* table() { return &table_; }
-
- private:
-  static btDefaultCollisionConfiguration* multipoint(btDefaultCollisionConfiguration& c) {
-    c.setConvexConvexMultipointIterations();
-    return &c;
-  }
-  btDefaultCollisionConfiguration config_;
-  btCollisionDispatcher dispatcher_;
-  btDbvtBroadphase broadphase_;
-  coupled_friction_solver solver_;
-  btDiscreteDynamicsWorld world_;
-  btBoxShape table_shape_;
-  btRigidBody table_;
-  bool has_table_ = false;
-  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
-  std::vector<std::unique_ptr<btRigidBody>> bodies_;
 };
 
 double moment_of_inertia(const btRigidBody* body, int axis) {
@@ -140,7 +80,7 @@ double moment_of_inertia(const btRigidBody* body, int axis) {
 TEST(BulletAdapter, RefusesMisuse) {
   world w;
   btRigidBody* coin = w.add_coin(btVector3(0, 0, coin_half_thickness));
-  coupled_friction_solver& s = w.solver();
+  coupled_friction_solver& s = w.plugin();
   EXPECT_THROW(s.couple(nullptr, w.table(), coin_friction()), std::invalid_argument);
   EXPECT_THROW(s.couple(coin, nullptr, coin_friction()), std::invalid_argument);
   EXPECT_THROW(s.couple(coin, coin, coin_friction()), std::invalid_argument);
@@ -152,13 +92,13 @@ TEST(BulletAdapter, RefusesMisuse) {
 TEST(BulletAdapter, CouplesAndDecouplesPairsInEitherOrder) {
   world w;
   btRigidBody* coin = w.add_coin(btVector3(0, 0, coin_half_thickness));
-  coupled_friction_solver& s = w.solver();
+  coupled_friction_solver& s = w.plugin();
   s.couple(coin, w.table(), coin_friction());
   s.couple(w.table(), coin, coin_friction());  // the same pair: replaces it
   EXPECT_TRUE(s.coupled(coin, w.table()));
   EXPECT_TRUE(s.coupled(w.table(), coin));
   EXPECT_FALSE(s.report(coin, w.table()).touching);  // no step yet
-  w.steps(10, coin_dt);
+  w.coin_steps(10);
   const auto& r = s.report(w.table(), coin);
   EXPECT_TRUE(r.touching);
   EXPECT_EQ(r.patch_radius, coin_radius);
@@ -167,7 +107,7 @@ TEST(BulletAdapter, CouplesAndDecouplesPairsInEitherOrder) {
   EXPECT_FALSE(s.decouple(w.table(), coin));  // only one entry for both orders
   EXPECT_FALSE(s.coupled(w.table(), coin));
   EXPECT_THROW(s.report(coin, w.table()), std::out_of_range);
-  w.steps(10, coin_dt);  // Bullet's own friction again
+  w.coin_steps(10);  // Bullet's own friction again
 }
 
 TEST(BulletAdapter, NeedsWarmStartingForTheNormalImpulses) {
@@ -176,8 +116,8 @@ TEST(BulletAdapter, NeedsWarmStartingForTheNormalImpulses) {
   world w;
   btRigidBody* coin = w.add_coin(btVector3(0, 0, coin_half_thickness));
   w.dynamics().getSolverInfo().m_solverMode &= ~SOLVER_USE_WARMSTARTING;
-  EXPECT_NO_THROW(w.steps(10, coin_dt));
-  w.solver().couple(coin, w.table(), coin_friction());
+  EXPECT_NO_THROW(w.coin_steps(10));
+  w.plugin().couple(coin, w.table(), coin_friction());
   EXPECT_THROW(w.step(coin_dt), std::logic_error);
 }
 
@@ -194,15 +134,15 @@ struct slope_run {
 slope_run coin_on_slope(double alpha) {
   world w(btVector3(g * std::sin(alpha), 0, -g * std::cos(alpha)));
   btRigidBody* coin = w.add_coin(btVector3(-1, 0, coin_half_thickness));
-  w.solver().couple(coin, w.table(), coin_friction());
-  w.steps(10000, coin_dt);  // settle: 0.1 s
+  w.plugin().couple(coin, w.table(), coin_friction());
+  w.coin_steps(10000);  // settle: 0.1 s
   const double x0 = static_cast<double>(coin->getCenterOfMassPosition().x());
   const double v0 = static_cast<double>(coin->getLinearVelocity().x());
-  w.steps(100000, coin_dt);  // 1 s
+  w.coin_steps(100000);  // 1 s
   slope_run out;
   out.moved = static_cast<double>(coin->getCenterOfMassPosition().x()) - x0;
   out.gained = static_cast<double>(coin->getLinearVelocity().x()) - v0;
-  out.sticking = w.solver().report(coin, w.table()).sticking;
+  out.sticking = w.plugin().report(coin, w.table()).sticking;
   return out;
 }
 
@@ -211,10 +151,10 @@ struct resting_ball {
   world w;
   btRigidBody* ball = w.add_ball();
   resting_ball() {
-    w.solver().couple(ball, w.table(), ball_friction());
-    w.steps(3000, ball_dt);
+    w.plugin().couple(ball, w.table(), ball_friction());
+    for (int i = 0; i < 3000; ++i) w.step(ball_dt);
   }
-  const spinslide::bullet::pair_report& report() { return w.solver().report(ball, w.table()); }
+  const spinslide::bullet::pair_report& report() { return w.plugin().report(ball, w.table()); }
 };
 
 // `steps` steps of the ball: the sum of the normal impulses, the end of
@@ -329,7 +269,7 @@ TEST(BulletAdapter, FrictionBetweenTwoFreeBodiesKeepsTheirMomentum) {
   btRigidBody* plank = w.add(std::make_unique<btBoxShape>(btVector3(0.5, 0.1, plank_half_height)),
                              plank_mass, btVector3(0, 0, -plank_half_height));
   btRigidBody* coin = w.add_coin(btVector3(-0.3, 0, coin_half_thickness));
-  w.solver().couple(coin, plank, coin_friction());
+  w.plugin().couple(coin, plank, coin_friction());
   auto step = [&] {
     // The plank's force on the coin's vertical line: no couple to tilt it.
     const btVector3 line = coin->getCenterOfMassPosition() - plank->getCenterOfMassPosition();
@@ -356,8 +296,8 @@ TEST(BulletAdapter, FrictionBetweenTwoFreeBodiesKeepsTheirMomentum) {
     step();
     const btVector3 change = momentum() - before;
     worst = std::fmax(worst, static_cast<double>(change.length()) / scale);
-    impulse += w.solver().report(coin, plank).normal_impulse;
-    ASSERT_FALSE(w.solver().report(coin, plank).sticking) << i;
+    impulse += w.plugin().report(coin, plank).normal_impulse;
+    ASSERT_FALSE(w.plugin().report(coin, plank).sticking) << i;
   }
   EXPECT_LT(worst, 1e-12) << "the pair's momentum changed by more than round-off in a step";
   const double n = impulse / (steps * coin_dt);
