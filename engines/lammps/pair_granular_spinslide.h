@@ -1,0 +1,90 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+//  The plugin binary built from this file includes LAMMPS headers and runs
+//  inside LAMMPS, which is GPL-2.0: the binary is GPL-2.0 (README.md).
+//
+/// \file pair_granular_spinslide.h
+/// The LAMMPS pair style granular/spinslide: Hertz contacts between spheres
+/// (material constants, viscoelastic normal damping), a Mindlin tangential
+/// spring and a Marshall twisting spring, whose force and torque are capped
+/// together on spinslide's exact Hertz limit set (Coulomb-Contensou
+/// friction), or independently (`coupling no`) as pair_style granular does.
+///
+///   pair_style granular/spinslide [coupling yes|no] [twist_transfer symmetric|negate]
+///   pair_coeff I J E eta_n nu mu [xgammat x] [cutoff rc]
+///
+/// engines/lammps/README.md documents the models and the syntax.
+
+#ifndef SPINSLIDE_LAMMPS_PAIR_GRANULAR_SPINSLIDE_H
+#define SPINSLIDE_LAMMPS_PAIR_GRANULAR_SPINSLIDE_H
+
+#include "pair.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+
+class PairGranularSpinslide : public Pair {
+ public:
+  explicit PairGranularSpinslide(class LAMMPS*);
+  ~PairGranularSpinslide() override;
+  void compute(int, int) override;
+  void settings(int, char**) override;
+  void coeff(int, char**) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void reset_dt() override;
+  double memory_usage() override;
+  double atom2cut(int) override;
+  double radii2cut(double, double) override;
+  void transfer_history(double*, double*) override;
+
+  /// Per-contact history layout (FixNeighHistory values, in this order).
+  enum : int {
+    kHistShear = 0,  ///< tangential spring displacement, 3 components (lab frame)
+    kHistTwist = 3,  ///< twisting spring angle
+    kHistRatio = 4,  ///< the last slipping ratio eps (0: none), warm start
+    kHistSize = 5
+  };
+
+  /// The extra quantities of the last force computation, on this process
+  /// (`compute ID all pair granular/spinslide` sums them over processes):
+  /// contacts, contacts at the friction limit (sliding), the sum of the
+  /// friction forces' magnitudes and of the twisting torques' magnitudes.
+  enum : int { kExtraContacts = 0, kExtraSliding, kExtraForce, kExtraTorque, kExtraSize };
+
+ protected:
+  void allocate();
+  // The friction of one contact: the springs in `history` (already rotated
+  // and stretched), the tangential slip velocity vtr and the twist rate in,
+  // the friction force fs and twisting torque mt out; true if capped.
+  bool friction_uncoupled(double* history, const double* vtr, double twist_rate, double kt,
+                          double damp_t, double k_tw, double damp_tw, double fscrit, double mtcrit,
+                          double* fs, double& mt) const;
+  bool friction_coupled(double* history, const double* vtr, double twist_rate, double kt,
+                        double damp_t, double k_tw, double damp_tw, double load, double a,
+                        double* fs, double& mt) const;
+
+  double dt = 0.0;
+  int coupled = 1;       // 1: the coupled cap (default); 0: independent caps
+  int twist_negate = 0;  // 1: the twist spring flips sign when a contact changes owner
+  int freeze_group_bit = 0;
+
+  class FixNeighHistory* fix_history = nullptr;
+  std::string id_dummy, id_history;
+
+  // per type pair: the pair_coeff inputs ...
+  double **youngs = nullptr, **poisson = nullptr, **eta_n = nullptr, **mu = nullptr;
+  double **xgammat = nullptr, **cutoff_type = nullptr;
+  // ... and the derived constants: (4/3)E* and 8G*
+  double **kn_hertz = nullptr, **kt_mindlin = nullptr;
+
+  double *onerad_dynamic = nullptr, *onerad_frozen = nullptr;
+  double *maxrad_dynamic = nullptr, *maxrad_frozen = nullptr;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif  // SPINSLIDE_LAMMPS_PAIR_GRANULAR_SPINSLIDE_H

@@ -1,0 +1,39 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+//  The plugin binary built from this file includes LAMMPS headers and runs
+//  inside LAMMPS, which is GPL-2.0: the binary is GPL-2.0 (README.md).
+//
+// Registers the pair style granular/spinslide with LAMMPS' plugin loader:
+//   plugin load /path/to/spinslideplugin.so
+
+#include "lammpsplugin.h"
+#include "version.h"
+
+#include "pair_granular_spinslide.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+void* create_pair_granular_spinslide(void* lmp) {
+  return new PairGranularSpinslide(static_cast<LAMMPS*>(lmp));
+}
+
+}  // namespace
+
+extern "C" void lammpsplugin_init(void* lmp, void* handle, void* regfunc) {
+  auto register_plugin = reinterpret_cast<lammpsplugin_regfunc>(regfunc);
+  lammpsplugin_t plugin;
+  plugin.version = LAMMPS_VERSION;
+  plugin.style = "pair";
+  plugin.name = "granular/spinslide";
+  plugin.info =
+      "Hertz-Mindlin-Marshall granular contacts with coupled sliding and twisting "
+      "friction (spinslide, Coulomb-Contensou) v0.1";
+  plugin.author = "the spinslide developers";
+  plugin.creator.v1 = &create_pair_granular_spinslide;
+  plugin.handle = handle;
+  (*register_plugin)(&plugin, lmp);
+}
