@@ -7,32 +7,21 @@
 //
 // The pair style granular/spinslide (pair_granular_spinslide.h, README.md).
 //
-// Per contact and step, for spheres i and j with unit normal n (from j to i),
-// overlap d = r_i + r_j - |x_i - x_j|, R* = r_i r_j/(r_i + r_j),
-// m* = m_i m_j/(m_i + m_j) and patch radius a = sqrt(R* d):
+// For spheres i and j with unit normal n (from j to i), overlap
+// d = r_i + r_j - |x_i - x_j|, R* = r_i r_j/(r_i + r_j) and
+// m* = m_i m_j/(m_i + m_j) (a frozen partner: the other's mass), the forces
+// and the history update are spinslide_lammps::contact_force
+// (spinslide_contact.h), which the fix wall/gran/spinslide shares: Hertz with
+// viscoelastic damping, Mindlin and Marshall springs with damping, capped
+// together on spinslide's Hertz limit set (coupling yes) or independently as
+// pair_style granular (coupling no, the same arithmetic, step for step).
+// The friction acts at the contact point, r - d/2 from each centre.
 //
-//   normal     F_n = (4/3) E* d a - eta_n a m* v_n       (Hertz, viscoelastic damping)
-//   tangential F_t = -k_t xi - x_gt eta_n a m* v_t,      k_t = 8 G* a   (Mindlin)
-//   twisting   M   = -k_w phi - (x_gt eta_n a m* a^2/2) w_n,  k_w = k_t a^2/2 (Marshall)
-//
-// with xi the tangential spring (kept in the contact's tangent plane, its
-// length preserved when the plane turns), phi the twisting spring, v_t the
-// slip velocity at the contact and w_n the relative spin about n.  The
-// springs are stretched by v_t dt and w_n dt each step.  The trial friction
-// (F_t, M) is then capped at the load mu |F_n|:
-//
-//   coupling no:  |F_t| <= mu |F_n| and |M| <= (2/3) a mu |F_n| separately, as
-//                 pair_style granular's `tangential mindlin NULL x_gt mu
-//                 twisting marshall` (the same arithmetic, step for step);
-//   coupling yes: (F_t, M) in mu |F_n| L, L spinslide's exact limit set of a
-//                 Hertzian patch (Coulomb-Contensou): outside it, the trial
-//                 is replaced by its nearest point of mu |F_n| L in the
-//                 springs' energy metric |dF|^2/k_t + |dM|^2/k_w.
-//
-// When capped, the springs are rewritten so that spring + damping equals the
-// capped friction (as pair_style granular does for its independent caps).
+// Per-contact history (FixNeighHistory, kHistSize = 5 values): the
+// tangential spring (3, lab frame), the twisting spring, the last ratio eps.
 
 #include "pair_granular_spinslide.h"
+#include "keywords.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -48,39 +37,21 @@
 #include "neighbor.h"
 #include "update.h"
 
-#include <spinslide/limit_set.hpp>
-#include <spinslide/profile.hpp>
+#include "spinslide_contact.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <exception>
-#include <limits>
 #include <string>
 
 using namespace LAMMPS_NS;
 
-namespace {
-
-// A spring's trial state is turned into the contact's plane only when its
-// normal component matters against the friction limit (relative threshold).
-constexpr double kFrameTolerance = 1e-10;
-
-// The springs' energy metric in the limit set's units (F/(mu N), M/(mu N a))
-// weighs the torque by a^2 k_t / k_w, which Marshall's k_w = k_t a^2/2 makes 2.
-constexpr double kTorqueWeight = 2.0;
-
-// The effective moduli of two materials (Hertz, Mindlin).
-double effective_youngs(double e1, double nu1, double e2, double nu2) {
-  return 1 / ((1 - nu1 * nu1) / e1 + (1 - nu2 * nu2) / e2);
-}
-double effective_shear(double e1, double nu1, double e2, double nu2) {
-  return 1 / ((2 * (2 - nu1) * (1 + nu1) / e1) + (2 * (2 - nu2) * (1 + nu2) / e2));
-}
-
-const spinslide::hertz<double> hertz_patch{};
-
-}  // namespace
+using spinslide_lammps::effective_shear;
+using spinslide_lammps::effective_youngs;
+using spinslide_lammps::kHistRatio;
+using spinslide_lammps::kHistShear;
+using spinslide_lammps::kHistSize;
+using spinslide_lammps::kHistTwist;
 
 /* ---------------------------------------------------------------------- */
 
@@ -136,100 +107,6 @@ PairGranularSpinslide::~PairGranularSpinslide() {
     delete[] maxrad_dynamic;
     delete[] maxrad_frozen;
   }
-}
-
-/* ----------------------------------------------------------------------
-   the friction, independent caps (pair_style granular's mindlin + marshall)
-------------------------------------------------------------------------- */
-
-bool PairGranularSpinslide::friction_uncoupled(double* h, const double* vtr, double twist_rate,
-                                               double kt, double damp_t, double k_tw,
-                                               double damp_tw, double fscrit, double mtcrit,
-                                               double* fs, double& mt) const {
-  bool capped = false;
-  fs[0] = -kt * h[0] - damp_t * vtr[0];
-  fs[1] = -kt * h[1] - damp_t * vtr[1];
-  fs[2] = -kt * h[2] - damp_t * vtr[2];
-  const double fmag = std::sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
-  if (fmag > fscrit) {
-    capped = true;
-    const double hmag = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
-    if (hmag != 0.0) {
-      // the spring that, with the damping, gives the capped force
-      for (int k = 0; k < 3; ++k) h[k] = -1.0 / kt * (fscrit * fs[k] / fmag + damp_t * vtr[k]);
-      const double scale = fscrit / fmag;
-      fs[0] *= scale;
-      fs[1] *= scale;
-      fs[2] *= scale;
-    } else {
-      fs[0] = fs[1] = fs[2] = 0.0;
-    }
-  }
-
-  mt = -k_tw * h[kHistTwist] - damp_tw * twist_rate;
-  if (std::fabs(mt) > mtcrit) {
-    capped = true;
-    // pair_style granular caps against the spin's direction, not the trial's
-    const double spin_sign = (twist_rate > 0) - (twist_rate < 0);
-    h[kHistTwist] = 1.0 / k_tw * (mtcrit * spin_sign - damp_tw * twist_rate);
-    mt = -mtcrit * spin_sign;
-  }
-  return capped;
-}
-
-/* ----------------------------------------------------------------------
-   the friction, capped together on spinslide's Hertz limit set
-------------------------------------------------------------------------- */
-
-bool PairGranularSpinslide::friction_coupled(double* h, const double* vtr, double twist_rate,
-                                             double kt, double damp_t, double k_tw, double damp_tw,
-                                             double load, double a, double* fs, double& mt) const {
-  // the trial: springs + damping
-  fs[0] = -kt * h[0] - damp_t * vtr[0];
-  fs[1] = -kt * h[1] - damp_t * vtr[1];
-  fs[2] = -kt * h[2] - damp_t * vtr[2];
-  mt = -k_tw * h[kHistTwist] - damp_tw * twist_rate;
-  const double fmag = std::sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
-  const double tmag = std::fabs(mt);
-  if (fmag == 0.0 && tmag == 0.0) return false;
-
-  // The trial in the limit set's units, f = |F|/(mu N), t = |M|/(mu N a).
-  // The metric diag(1/k_t, 1/k_t, 1/k_w) is isotropic in the tangent plane,
-  // so the nearest point keeps the force's direction and the torque's sign:
-  // the 3-D projection reduces to the one on the magnitudes (f, t) with
-  // torque weight a^2 k_t/k_w = 2 (docs/contact.md; spring_friction.hpp).
-  double fscale = 0.0, mcap = 0.0;
-  bool capped;
-  if (load > 0.0) {
-    const double f = fmag / load, t = tmag / (load * a);
-    if (!std::isfinite(f) || !std::isfinite(t)) {
-      capped = true;  // a vanishing load against a finite trial: no friction
-    } else {
-      spinslide::limit_projection<double> p;
-      try {
-        p = spinslide::project_to_limit_set(hertz_patch, f, t, kTorqueWeight,
-                                            spinslide::starting_ratio<double>{h[kHistRatio]});
-      } catch (std::exception& e) {
-        error->one(FLERR, "pair granular/spinslide: the projection failed: {}", e.what());
-      }
-      if (p.sticking) return false;
-      capped = true;
-      fscale = fmag > 0.0 ? p.force * load / fmag : 0.0;
-      mcap = std::copysign(p.torque * load * a, mt);
-      if (!std::isnan(p.ratio)) h[kHistRatio] = p.ratio;
-    }
-  } else {
-    capped = true;  // no load, no friction
-  }
-
-  // slip: the capped friction, and the springs that give it with the damping
-  fs[0] *= fscale;
-  fs[1] *= fscale;
-  fs[2] *= fscale;
-  mt = mcap;
-  for (int k = 0; k < 3; ++k) h[k] = -(fs[k] + damp_t * vtr[k]) / kt;
-  h[kHistTwist] = -(mt + damp_tw * twist_rate) / k_tw;
-  return capped;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -297,80 +174,41 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
       const double rinv = 1.0 / r;
       const double nx = delx * rinv, ny = dely * rinv, nz = delz * rinv;
 
-      // relative velocity of i's centre against j's, and its normal part
-      const double vr1 = v[i][0] - v[j][0];
-      const double vr2 = v[i][1] - v[j][1];
-      const double vr3 = v[i][2] - v[j][2];
-      const double vnnr = vr1 * nx + vr2 * ny + vr3 * nz;
-
       double meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
       if (mask[i] & freeze_group_bit) meff = rmass[j];
       if (mask[j] & freeze_group_bit) meff = rmass[i];
 
-      // Hertz with viscoelastic damping
-      const double reff = radi * radj / radsum;
-      const double delta = radsum - r;
-      const double a = std::sqrt(delta * reff);
-      const double fn_elastic = kn_hertz[itype][jtype] * delta * a;
-      const double damp_n = eta_n[itype][jtype] * (a * meff);
-      const double fn = fn_elastic + (-damp_n * vnnr);
-      const double load_n = std::fabs(fn);
-      const double fscrit = mu[itype][jtype] * load_n;
+      spinslide_lammps::ContactState state;
+      state.n[0] = nx;
+      state.n[1] = ny;
+      state.n[2] = nz;
+      state.delta = radsum - r;
+      state.reff = radi * radj / radsum;
+      state.meff = meff;
+      state.vr[0] = v[i][0] - v[j][0];
+      state.vr[1] = v[i][1] - v[j][1];
+      state.vr[2] = v[i][2] - v[j][2];
+      state.wr[0] = radi * omega[i][0] + radj * omega[j][0];
+      state.wr[1] = radi * omega[i][1] + radj * omega[j][1];
+      state.wr[2] = radi * omega[i][2] + radj * omega[j][2];
+      state.twist_rate = (omega[i][0] - omega[j][0]) * nx + (omega[i][1] - omega[j][1]) * ny +
+                         (omega[i][2] - omega[j][2]) * nz;
 
-      // slip velocity at the contact point: tangential relative velocity
-      // minus the surfaces' rotation (r_i w_i + r_j w_j) x n
-      const double vt1 = vr1 - nx * vnnr;
-      const double vt2 = vr2 - ny * vnnr;
-      const double vt3 = vr3 - nz * vnnr;
-      const double wr1 = radi * omega[i][0] + radj * omega[j][0];
-      const double wr2 = radi * omega[i][1] + radj * omega[j][1];
-      const double wr3 = radi * omega[i][2] + radj * omega[j][2];
-      double vtr[3];
-      vtr[0] = vt1 - (nz * wr2 - ny * wr3);
-      vtr[1] = vt2 - (nx * wr3 - nz * wr1);
-      vtr[2] = vt3 - (ny * wr1 - nx * wr2);
+      spinslide_lammps::ContactLaw law;
+      law.kn = kn_hertz[itype][jtype];
+      law.kt = kt_mindlin[itype][jtype];
+      law.eta_n = eta_n[itype][jtype];
+      law.xgammat = xgammat[itype][jtype];
+      law.mu = mu[itype][jtype];
 
-      // Mindlin and Marshall springs and their damping
-      const double kt = kt_mindlin[itype][jtype] * a;
-      const double damp_t = xgammat[itype][jtype] * damp_n;
-      const double k_tw = 0.5 * kt * a * a;
-      const double damp_tw = 0.5 * damp_t * a * a;
-      const double twist_rate = (omega[i][0] - omega[j][0]) * nx +
-                                (omega[i][1] - omega[j][1]) * ny + (omega[i][2] - omega[j][2]) * nz;
-
-      if (advance) {
-        // Keep the tangential spring in the tangent plane as the contact
-        // turns: drop its normal part and restore its length.
-        const double hn = history[0] * nx + history[1] * ny + history[2] * nz;
-        if (std::fabs(hn) * kt > kFrameTolerance * fscrit) {
-          const double len = std::sqrt(history[0] * history[0] + history[1] * history[1] +
-                                       history[2] * history[2]);
-          history[0] -= hn * nx;
-          history[1] -= hn * ny;
-          history[2] -= hn * nz;
-          const double plen = std::sqrt(history[0] * history[0] + history[1] * history[1] +
-                                        history[2] * history[2]);
-          const double scale = plen > 0 ? len / plen : 0;
-          history[0] *= scale;
-          history[1] *= scale;
-          history[2] *= scale;
-        }
-        history[0] += vtr[0] * dt;
-        history[1] += vtr[1] * dt;
-        history[2] += vtr[2] * dt;
-        history[kHistTwist] += twist_rate * dt;
-      }
-
-      double fs[3], mt;
-      bool capped;
-      if (coupled) {
-        capped = friction_coupled(history, vtr, twist_rate, kt, damp_t, k_tw, damp_tw, fscrit, a,
-                                  fs, mt);
-      } else {
-        const double mtcrit = (2.0 / 3.0) * a * mu[itype][jtype] * load_n;
-        capped = friction_uncoupled(history, vtr, twist_rate, kt, damp_t, k_tw, damp_tw, fscrit,
-                                    mtcrit, fs, mt);
-      }
+      spinslide_lammps::ContactForce cf;
+      spinslide_lammps::contact_force(law, state, history, dt, advance, coupled != 0, error,
+                                      "pair granular/spinslide", cf);
+      const double delta = state.delta;
+      const double fn = cf.fn;
+      const double* fs = cf.fs;
+      const double mt = cf.mt;
+      const bool capped = cf.capped;
 
       if (tally) {
         ncontacts += 1.0;
@@ -457,18 +295,12 @@ void PairGranularSpinslide::settings(int narg, char** arg) {
                  arg[iarg]);
     const std::string key = arg[iarg], value = arg[iarg + 1];
     if (key == "coupling") {
-      if (value == "yes" || value == "on")
-        coupled = 1;
-      else if (value == "no" || value == "off")
-        coupled = 0;
-      else
+      coupled = spinslide_lammps::either(value, {"yes", "on"}, {"no", "off"});
+      if (coupled < 0)
         error->all(FLERR, "Illegal pair_style granular/spinslide command: coupling {}", value);
     } else if (key == "twist_transfer") {
-      if (value == "symmetric")
-        twist_negate = 0;
-      else if (value == "negate")
-        twist_negate = 1;
-      else
+      twist_negate = spinslide_lammps::either(value, {"negate"}, {"symmetric"});
+      if (twist_negate < 0)
         error->all(FLERR, "Illegal pair_style granular/spinslide command: twist_transfer {}",
                    value);
     } else {

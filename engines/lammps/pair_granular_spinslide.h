@@ -41,14 +41,6 @@ class PairGranularSpinslide : public Pair {
   double radii2cut(double, double) override;
   void transfer_history(double*, double*) override;
 
-  /// Per-contact history layout (FixNeighHistory values, in this order).
-  enum : int {
-    kHistShear = 0,  ///< tangential spring displacement, 3 components (lab frame)
-    kHistTwist = 3,  ///< twisting spring angle
-    kHistRatio = 4,  ///< the last slipping ratio eps (0: none), warm start
-    kHistSize = 5
-  };
-
   /// The extra quantities of the last force computation, on this process
   /// (`compute ID all pair granular/spinslide` sums them over processes):
   /// contacts, contacts at the friction limit (sliding), the sum of the
@@ -57,16 +49,6 @@ class PairGranularSpinslide : public Pair {
 
  protected:
   void allocate();
-  // The friction of one contact: the springs in `history` (already rotated
-  // and stretched), the tangential slip velocity vtr and the twist rate in,
-  // the friction force fs and twisting torque mt out; true if capped.
-  bool friction_uncoupled(double* history, const double* vtr, double twist_rate, double kt,
-                          double damp_t, double k_tw, double damp_tw, double fscrit, double mtcrit,
-                          double* fs, double& mt) const;
-  bool friction_coupled(double* history, const double* vtr, double twist_rate, double kt,
-                        double damp_t, double k_tw, double damp_tw, double load, double a,
-                        double* fs, double& mt) const;
-
   double dt = 0.0;
   int coupled = 1;       // 1: the coupled cap (default); 0: independent caps
   int twist_negate = 0;  // 1: the twist spring flips sign when a contact changes owner

@@ -5,12 +5,14 @@
 //  The plugin binary built from this file includes LAMMPS headers and runs
 //  inside LAMMPS, which is GPL-2.0: the binary is GPL-2.0 (README.md).
 //
-// Registers the pair style granular/spinslide with LAMMPS' plugin loader:
+// Registers the pair style granular/spinslide and the fix
+// wall/gran/spinslide with LAMMPS' plugin loader:
 //   plugin load /path/to/spinslideplugin.so
 
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "fix_wall_gran_spinslide.h"
 #include "pair_granular_spinslide.h"
 
 using namespace LAMMPS_NS;
@@ -19,6 +21,10 @@ namespace {
 
 void* create_pair_granular_spinslide(void* lmp) {
   return new PairGranularSpinslide(static_cast<LAMMPS*>(lmp));
+}
+
+void* create_fix_wall_gran_spinslide(void* lmp, int argc, char** argv) {
+  return new FixWallGranSpinslide(static_cast<LAMMPS*>(lmp), argc, argv);
 }
 
 }  // namespace
@@ -35,5 +41,13 @@ extern "C" void lammpsplugin_init(void* lmp, void* handle, void* regfunc) {
   plugin.author = "the spinslide developers";
   plugin.creator.v1 = &create_pair_granular_spinslide;
   plugin.handle = handle;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "fix";
+  plugin.name = "wall/gran/spinslide";
+  plugin.info =
+      "Flat granular walls with the Hertz-Mindlin-Marshall contacts of granular/spinslide "
+      "(spinslide, Coulomb-Contensou) v0.1";
+  plugin.creator.v2 = &create_fix_wall_gran_spinslide;
   (*register_plugin)(&plugin, lmp);
 }

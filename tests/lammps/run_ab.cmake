@@ -1,6 +1,7 @@
 # Runs one LAMMPS input twice, with -var model A and -var model B, in DIR
 # (serially, or on NP MPI ranks when NP > 1), and compares the two dumps
-# (<DIR>/ab_<model>.dump, the inputs' `out`) with compare_dumps at TOL.
+# (<DIR>/ab_<model>.dump: the inputs' variable `out` is set so) with
+# compare_dumps at TOL.
 #   cmake -DLMP=... -DPLUGIN=... -DINPUT=... -DA=stock -DB=uncoupled -DCOMPARE=...
 #         -DDIR=... [-DNP=2 -DMPIEXEC=mpirun] [-DTOL=0] [-DVARS="name value;..."]
 #         -P run_ab.cmake
@@ -27,7 +28,7 @@ endforeach()
 foreach(model IN ITEMS ${A} ${B})
   execute_process(
     COMMAND ${launcher} "${LMP}" -in "${INPUT}" -var model ${model} -var plugin "${PLUGIN}"
-            ${extra} -log "log.${model}" -screen none
+            -var out ab_${model} ${extra} -log "log.${model}" -screen none
     WORKING_DIRECTORY "${DIR}" RESULT_VARIABLE ran)
   if(NOT ran EQUAL 0)
     message(FATAL_ERROR "run_ab.cmake: LAMMPS failed for model ${model} (${DIR}/log.${model})")

@@ -41,6 +41,9 @@ def main():
         if sa != sb or ca != cb or len(ra) != len(rb):
             print(f"step {sa}/{sb}: the dumps do not match in shape")
             return 2
+        if not ra:
+            print(f"step {sa:7d}: no atoms")
+            continue
         diffs = []
         for c, name in enumerate(ca):
             if name == "id":

@@ -1,0 +1,73 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+//  The plugin binary built from this file includes LAMMPS headers and runs
+//  inside LAMMPS, which is GPL-2.0: the binary is GPL-2.0 (README.md).
+//
+/// \file fix_wall_gran_spinslide.h
+/// The LAMMPS fix wall/gran/spinslide: flat granular walls with the contact
+/// law of the pair style granular/spinslide (spinslide_contact.h), the wall a
+/// body of infinite radius and mass of the spheres' material.
+///
+///   fix ID group wall/gran/spinslide E eta_n nu mu [xgammat x]
+///       [coupling yes|no] [moduli exact|legacy] xplane|yplane|zplane lo hi
+///
+/// lo, hi: the walls' positions (NULL: no wall on that side).
+/// engines/lammps/README.md documents the syntax and the model.
+
+#ifndef SPINSLIDE_LAMMPS_FIX_WALL_GRAN_SPINSLIDE_H
+#define SPINSLIDE_LAMMPS_FIX_WALL_GRAN_SPINSLIDE_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixWallGranSpinslide : public Fix {
+ public:
+  FixWallGranSpinslide(class LAMMPS*, int, char**);
+  ~FixWallGranSpinslide() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+  void reset_dt() override;
+  double compute_vector(int) override;
+  double memory_usage() override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double*) override;
+  int unpack_exchange(int, double*) override;
+  int pack_restart(int, double*) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+
+  /// The global vector (`f_ID[k]`), summed over processes, of the last step:
+  /// the contacts with the wall, those at the friction limit (sliding), the
+  /// sum of the friction forces' magnitudes and of the twisting torques'.
+  enum : int { kStatContacts = 0, kStatSliding, kStatForce, kStatTorque, kStatSize };
+
+ protected:
+  int axis = 2;           // the walls' normal: 0 x, 1 y, 2 z
+  double lo = 0.0;        // the lower wall (-1e20 for none)
+  double hi = 0.0;        // the upper wall (+1e20 for none)
+  int coupled = 1;        // 1: the coupled cap (default); 0: independent caps
+  int legacy_moduli = 0;  // 1: LAMMPS 2021 fix wall/gran's (4/3)E* and 8G*
+
+  // the contact law: (4/3)E*, 8G*, eta_n, xgammat, mu
+  double kn = 0.0, kt = 0.0, eta_n = 0.0, xgammat = 1.0, mu = 0.0;
+
+  double dt = 0.0;
+  double** history = nullptr;  // per atom: spinslide_lammps::kHistSize values
+
+  double stats_local[kStatSize] = {0.0, 0.0, 0.0, 0.0};
+  double stats_all[kStatSize] = {0.0, 0.0, 0.0, 0.0};
+  int stats_reduced = 0;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif  // SPINSLIDE_LAMMPS_FIX_WALL_GRAN_SPINSLIDE_H
