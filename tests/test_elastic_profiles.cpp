@@ -244,3 +244,37 @@ TEST(ElasticProfiles, DerivativesAtTheEndsAndBadRatios) {
 }
 
 }  // namespace
+
+// The projection takes 𝓕, 𝓣 and 𝓕′ of Hertz and Boussinesq from one call
+// (detail::fused_value_slope); it must give force_torque's and
+// force_derivative's values bit for bit (those are held to the references
+// above), on every branch: ε ≤ 1, the elementary forms below the derivative's
+// series start (13/10), the values' elementary forms with the derivative's
+// series (13/10 to 3/2), the series, and the branch points themselves.
+template <class Real, class Profile>
+void expect_fused_equals_separate(const Profile& p) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> log_eps(-6, 6);
+  std::vector<Real> ratios{Real(1), Real(13) / 10, Real(3) / 2};
+  for (const Real b : std::vector<Real>(ratios)) {
+    ratios.push_back(boost::math::float_prior(b));
+    ratios.push_back(boost::math::float_next(b));
+  }
+  for (int i = 0; i < 20000; ++i) ratios.push_back(static_cast<Real>(std::pow(10.0, log_eps(rng))));
+  int mismatches = 0;
+  for (const Real e : ratios) {
+    const auto both = spinslide::detail::fused_value_slope<Profile>::at(p, e);
+    const auto ft = p.force_torque(e);
+    const Real slope = p.force_derivative(e);
+    if (!(both.value.force == ft.force && both.value.torque == ft.torque && both.slope == slope))
+      ++mismatches;
+  }
+  EXPECT_EQ(mismatches, 0);
+}
+
+TEST(ElasticProfiles, FusedValuesAndSlopeAreTheSeparateOnesBitForBit) {
+  expect_fused_equals_separate<double>(spinslide::hertz<double>());
+  expect_fused_equals_separate<double>(spinslide::boussinesq<double>());
+  expect_fused_equals_separate<float>(spinslide::hertz<float>());
+  expect_fused_equals_separate<long double>(spinslide::boussinesq<long double>());
+}

@@ -17,6 +17,7 @@
 
 #include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/elastic_closed_forms.hpp>
+#include <spinslide/detail/force_slope.hpp>
 #include <spinslide/detail/ring_kernel.hpp>
 #include <spinslide/detail/singular_ratios.hpp>
 #include <spinslide/disk.hpp>
@@ -204,6 +205,28 @@ class boussinesq : public profile_base<boussinesq<Real, Policy>, Real, Policy> {
     return detail::elastic_at<detail::boussinesq_load>(eps, false);
   }
 };
+
+namespace detail {
+// 𝓕 ≤ 1, as profile_base::force_torque caps it.
+template <class Real>
+elastic_value_slope<Real> capped(elastic_value_slope<Real> r) {
+  if (r.value.force > 1) r.value.force = 1;
+  return r;
+}
+// Hertz's and Boussinesq's 𝓕, 𝓣 and 𝓕′ in one call (force_slope.hpp).
+template <class Real, class Policy>
+struct fused_value_slope<hertz<Real, Policy>> : std::true_type {
+  static elastic_value_slope<Real> at(const hertz<Real, Policy>&, Real eps) {
+    return capped(elastic_value_and_slope<hertz_load>(eps));
+  }
+};
+template <class Real, class Policy>
+struct fused_value_slope<boussinesq<Real, Policy>> : std::true_type {
+  static elastic_value_slope<Real> at(const boussinesq<Real, Policy>&, Real eps) {
+    return capped(elastic_value_and_slope<boussinesq_load>(eps));
+  }
+};
+}  // namespace detail
 
 /// A profile shrunk to the radius a ∈ (0, 1]: 𝓕_a(ε) = 𝓕(ε/a), 𝓣_a(ε) = a 𝓣(ε/a);
 /// ⟨r⟩ → a⟨r⟩, ⟨1/r⟩ → ⟨1/r⟩/a, ⟨r²⟩ → a²⟨r²⟩.  With weighted_sum it builds

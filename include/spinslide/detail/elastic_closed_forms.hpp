@@ -224,6 +224,57 @@ force_torque_result<Real> elastic_at(Real eps, bool derivative) {
   return {Real(r.force), Real(r.torque)};
 }
 
+// 𝓕, 𝓣 and 𝓕′ at one ratio, for the limit-set projection, which needs all
+// three at each step (force_slope.hpp, fused_value_slope).
+template <class Real>
+struct elastic_value_slope {
+  force_torque_result<Real> value;  // 𝓕, 𝓣
+  Real slope;                       // 𝓕′
+};
+
+// (E3) for the values and the derivative together: the same sums as
+// elastic_series(ε, false) and elastic_series(ε, true), term for term, from
+// one z and one count (the count depends on z only).
+template <class Load, class Real>
+elastic_value_slope<Real> elastic_series_value_slope(Real eps) {
+  const auto& c = elastic_series_coefficients<Load, Real>();
+  const Real k = 1 / eps, z = k * k;
+  const std::size_t n = elastic_series_terms(c, z);
+  Real f = 0, t = 0, d = 0;
+  for (std::size_t j = n; j >= 1; --j) {
+    f = f * z + c.force[j];
+    t = t * z + c.torque[j];
+    d = d * z + Real(2 * j) * c.force[j];
+  }
+  return {{1 - f * z, (t * z + c.torque[0]) * k}, d * z * k};
+}
+
+// 𝓕, 𝓣 and 𝓕′ of the load at 0 < ε < ∞, each exactly as elastic_at gives
+// it (the same branch and the same operations), sharing what the branches
+// share: √(ε² − 1) and asin(1/ε) below the series, z and the term count in
+// them.
+template <class Load, class Real>
+elastic_value_slope<Real> elastic_value_and_slope(Real eps) {
+  using W = elastic_arithmetic<Real>;
+  const W& e = eps;
+  force_torque_result<W> v;
+  W d;
+  if (e <= 1) {
+    v = Load::inside(e);
+    d = Load::inside_derivative(e).force;
+  } else if (e >= elastic_series_start<W>()) {
+    const auto both = elastic_series_value_slope<Load>(e);
+    v = both.value;
+    d = both.slope;
+  } else {
+    const elastic_outside<W> o(e);
+    v = Load::outside(o);
+    d = e < elastic_derivative_series_start<W>() ? Load::outside_force_derivative(o)
+                                                 : elastic_series<Load>(e, true).force;
+  }
+  return {{Real(v.force), Real(v.torque)}, Real(d)};
+}
+
 // The derivatives at any ε ≥ 0 (𝓕′ = 0 and 𝓣′ = −0 at ε = ∞, where the
 // series has z = 0), after the one check of ε; `function` names the member.
 template <class Load, class Real, class Policy>

@@ -32,6 +32,14 @@ constexpr bool has_force_slope() {
   return has_member_force_derivative<P>::value;
 }
 
+/// Specialized (true, with static at(p, ε) giving 𝓕, 𝓣 and 𝓕′ together for
+/// 0 < ε < ∞) by profiles whose closed forms share work between the values
+/// and the slope (Hertz and Boussinesq, profile.hpp); the limit-set
+/// projection then takes all three from one call.  The results are those of
+/// force_torque and force_slope, bit for bit.
+template <class P>
+struct fused_value_slope : std::false_type {};
+
 /// 𝓕′(ε) for 0 < ε < ∞, for a profile with has_force_slope<P>().
 template <class P>
 typename P::value_type force_slope(const P& p, typename P::value_type eps) {

@@ -71,8 +71,8 @@ class limit_projector {
     if (x_ + y_ / top_ <= 1) return sticking();  // inside the triangle (0,0), (1,0), (0,⟨r⟩)
     if (y_ == 0) return on_curve(inf(), {Real(1), Real(0)});  // x > 1: the corner (1, 0)
     if (x_ == 0) return on_curve(Real(0), {Real(0), top_});  // y > ⟨r⟩: the corner (0, ⟨r⟩)
-    lo_ = {Real(0), {Real(0), top_}, x_};
-    hi_ = {inf(), {Real(1), Real(0)}, -inf()};
+    lo_ = {Real(0), {Real(0), top_}, x_, Real(0)};
+    hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0)};
     sample a = evaluate(first_ratio(start));
     for (int i = 0; i < max_iterations; ++i) {
       if (inside_quadrilateral(a.ft)) return sticking();
@@ -81,7 +81,7 @@ class limit_projector {
       const step next = next_ratio(a);
       if (next.kind == step_kind::edge) return on_edge();
       if (next.kind == step_kind::converged)
-        return next.eps == a.eps ? classify(a) : classify(evaluate(next.eps));
+        return next.eps == a.eps ? classify(a) : classify(advance(a, next.eps));
       previous_ = a;
       a = evaluate(next.eps);
     }
@@ -95,7 +95,8 @@ class limit_projector {
   struct sample {
     Real eps;  // ε (0 and ∞ at the bracket's initial sides)
     force_torque_result<Real> ft;
-    Real h;  // (x − 𝓕) − wε(y − 𝓣), divided by w where w < 1 (evaluate)
+    Real h;      // (x − 𝓕) − wε(y − 𝓣), divided by w where w < 1 (evaluate)
+    Real slope;  // 𝓕′ where the profile gives it with the values (fused_value_slope)
   };
   enum class step_kind { search, converged, edge };
   struct step {
@@ -110,11 +111,31 @@ class limit_projector {
   // (w = 7e-321).  wε(y − 𝓣) as one product: w·ε alone can underflow
   // (w = 1e-187, ε = 1e-234) where the whole is a normal number.
   sample evaluate(Real eps) const {
-    const auto ft = profile_.force_torque(eps);
+    force_torque_result<Real> ft;
+    Real slope = 0;
+    if constexpr (fused_value_slope<Profile>::value) {
+      const auto both = fused_value_slope<Profile>::at(profile_, eps);
+      ft = both.value;
+      slope = both.slope;
+    } else {
+      ft = profile_.force_torque(eps);
+    }
     const Real h = w_ < 1 ? (x_ - ft.force) / w_ - product(eps, y_ - ft.torque)
                           : (x_ - ft.force) - product(w_, eps, y_ - ft.torque);
-    return {eps, ft, h};
+    return {eps, ft, h, slope};
   }
+  // The curve point at the converged ratio `next`, from the last sample and
+  // the slope of its Newton step, to first order: 𝓕 + 𝓕′Δ and 𝓣 − ε𝓕′Δ
+  // (𝓣′ = −ε𝓕′).  Converged means r·max(r, the slope's uncertainty) ≤
+  // epsilon^(4/3), r = |Δ|/ε (next_ratio), so the terms left out, of order
+  // r² and r times the uncertainty, are below rounding: one evaluation of
+  // the profile saved per projection.
+  sample advance(const sample& a, Real next) const {
+    const Real delta = next - a.eps;
+    const Real df = slope_ * delta;
+    return {next, {a.ft.force + df, a.ft.torque - a.eps * df}, Real(0), slope_};
+  }
+
   // dh/dε (h as evaluate() scales it) for a slope 𝓕′ = `slope`.
   Real h_slope(const sample& a, Real slope) const {
     if (w_ < 1) return -(slope / w_ + product(slope, a.eps, a.eps) + (y_ - a.ft.torque));
@@ -157,14 +178,16 @@ class limit_projector {
     Real slope, uncertainty;
   };
   slope_estimate force_slope_at(const sample& a) const {
-    if constexpr (has_force_slope<Profile>()) {
+    if constexpr (fused_value_slope<Profile>::value) {
+      return {a.slope, Real(0)};
+    } else if constexpr (has_force_slope<Profile>()) {
       return {force_slope(profile_, a.eps), Real(0)};
     } else {
       using std::fabs;
       const Real gap = fabs(a.eps - previous_.eps) / a.eps;
       if (gap > 0 && gap <= Real(0.1)) return secant_slope(a, previous_, gap);
       const Real e = a.eps * (1 + difference_step());
-      return secant_slope(a, {e, profile_.force_torque(e), Real(0)}, difference_step());
+      return secant_slope(a, {e, profile_.force_torque(e), Real(0), Real(0)}, difference_step());
     }
   }
   // The secant of 𝓕 while 𝓕 ≤ 1/2; above, where 𝓕 approaches 1 and its
@@ -207,6 +230,7 @@ class limit_projector {
     using boost::math::tools::epsilon;
     using std::fabs;
     const slope_estimate d = force_slope_at(a);
+    slope_ = d.slope;
     const Real slope = h_slope(a, d.slope);
     const Real next = a.eps - a.h / slope;
     const bool slow = previous_.eps > 0 && fabs(a.h) > fabs(previous_.h) / 2;
@@ -296,6 +320,7 @@ class limit_projector {
   Real x_, y_, w_, top_;
   sample lo_{}, hi_{}, previous_{};
   Real reach_ = 8;
+  Real slope_ = 0;  // 𝓕′ of the last Newton step (advance)
 };
 
 }  // namespace detail
