@@ -278,3 +278,40 @@ TEST(ElasticProfiles, FusedValuesAndSlopeAreTheSeparateOnesBitForBit) {
   expect_fused_equals_separate<float>(spinslide::hertz<float>());
   expect_fused_equals_separate<long double>(spinslide::boussinesq<long double>());
 }
+
+// 𝓕″ (fused_value_slope's curvature, for the projection's Halley steps)
+// against the central difference of 𝓕′ in 50 digits (the closed forms of
+// cpp_bin_float_50, which the reference table holds to the quadrature):
+// step 1e-15, so that the difference's error, of order 1e-30 in both its
+// truncation and its rounding, is far below double's.  Across every branch
+// (ε ≤ 1, the elementary forms, the derivative's series from 13/10, the
+// values' series from 3/2) and near their switch points.  Hertz's 𝓕″ is
+// continuous at ε = 1 and Boussinesq's is 0 below it and −k³/w above.
+template <template <class, class> class Profile>
+double worst_curvature_error(double tiny_relative_floor) {
+  using quiet = boost::math::policies::policy<>;
+  const Profile<double, quiet> p;
+  const Profile<big, quiet> q;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> log_eps(-4, 4);
+  std::vector<double> ratios{0.5, 0.999, 1.0000001, 1.2999, 1.3001, 1.4999, 1.5001, 3.0, 1e3};
+  for (int i = 0; i < 400; ++i) ratios.push_back(std::pow(10.0, log_eps(rng)));
+  double worst = 0;
+  for (const double e : ratios) {
+    const double c =
+        spinslide::detail::fused_value_slope<Profile<double, quiet>>::at(p, e).curvature;
+    const big h = big(e) * big("1e-15");
+    const big exact = (q.force_derivative(big(e) + h) - q.force_derivative(big(e) - h)) / (2 * h);
+    const double err =
+        static_cast<double>(abs(big(c) - exact) / (std::max)(abs(exact), big(tiny_relative_floor)));
+    worst = (std::max)(worst, err);
+  }
+  return worst;
+}
+
+TEST(ElasticProfiles, CurvatureAgreesWithTheDifferenceOfTheSlope) {
+  // Within 1e-14 relative (measured 8e-16 for Hertz, 6e-16 for Boussinesq);
+  // Boussinesq's 𝓕″ = 0 for ε ≤ 1, so relative to the larger of |𝓕″| and 1e-3.
+  EXPECT_LT(worst_curvature_error<spinslide::hertz>(0.0), 1e-14);
+  EXPECT_LT(worst_curvature_error<spinslide::boussinesq>(1e-3), 1e-14);
+}

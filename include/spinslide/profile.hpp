@@ -213,15 +213,17 @@ elastic_value_slope<Real> capped(elastic_value_slope<Real> r) {
   if (r.value.force > 1) r.value.force = 1;
   return r;
 }
-// Hertz's and Boussinesq's 𝓕, 𝓣 and 𝓕′ in one call (force_slope.hpp).
+// Hertz's and Boussinesq's 𝓕, 𝓣, 𝓕′ and 𝓕″ in one call (force_slope.hpp).
 template <class Real, class Policy>
 struct fused_value_slope<hertz<Real, Policy>> : std::true_type {
+  static constexpr bool bounded_curvature = true;
   static elastic_value_slope<Real> at(const hertz<Real, Policy>&, Real eps) {
     return capped(elastic_value_and_slope<hertz_load>(eps));
   }
 };
 template <class Real, class Policy>
 struct fused_value_slope<boussinesq<Real, Policy>> : std::true_type {
+  static constexpr bool bounded_curvature = false;  // −k³/w as ε → 1⁺
   static elastic_value_slope<Real> at(const boussinesq<Real, Policy>&, Real eps) {
     return capped(elastic_value_and_slope<boussinesq_load>(eps));
   }

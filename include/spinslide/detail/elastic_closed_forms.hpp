@@ -13,7 +13,11 @@
 //                                         𝓣 = (3/64)[(3w⁴ − 2w² + 3)A + 3w(1 − w²)]
 //   ε ≥ 3/2 (series in z = k², (E3)): 𝓕 = 1 − Σ_{j≥1} a_j z^j,   ε𝓣 = Σ_{j≥0} b_j z^j,
 //
-// and everywhere 𝓕′ = U − 𝓕/ε, 𝓣′ = −ε𝓕′.  Each branch is used where it is
+// and everywhere 𝓕′ = U − 𝓕/ε, 𝓣′ = −ε𝓕′.  The curvature 𝓕″ (for the
+// limit-set projection's Halley steps) is, for ε > 1,
+//   Hertz 𝓕″ = (3/8)[3wk + 2wk³ − 3εA],  Boussinesq 𝓕″ = −k³/w,
+// (the derivative of 𝓕′ below with dA/dε = −k/w, dw/dε = ε/w), and in the
+// series −z Σ 2j(2j + 1) a_j z^j.  Each branch is used where it is
 // a sum of like-signed terms or nearly so: the elementary forms cancel as
 // ε → ∞ (𝓣 by a factor of about ε⁴), the series converge slowly as ε → 1.
 // float is evaluated in double; every other type in its own arithmetic.
@@ -52,11 +56,16 @@ using elastic_arithmetic =
 
 // The coefficients of (E3), c_j = C(2j, j)/4ʲ times a rational in j that
 // depends on the load, long enough for the slowest case (the derivatives at
-// their series start), built once per type (in long double for double).
+// their series start), built once per type (in long double for double);
+// with them the derivatives' coefficients and the term counts' thresholds.
 template <class Real>
 struct elastic_coefficients {
-  std::vector<Real> force;   // a_j (a_0 = 0)
-  std::vector<Real> torque;  // b_j
+  std::vector<Real> force;      // a_j (a_0 = 0)
+  std::vector<Real> torque;     // b_j
+  std::vector<Real> slope;      // 2j a_j: 𝓕′ = k Σ 2j a_j z^j
+  std::vector<Real> curvature;  // 2j(2j + 1) a_j: 𝓕″ = −z Σ 2j(2j + 1) a_j z^j
+  // elastic_series_terms: n terms suffice below z = threshold[n] (n ≥ 2)
+  std::vector<Real> threshold;
 };
 
 template <class Load, class Real>
@@ -74,10 +83,19 @@ const elastic_coefficients<Real>& elastic_series_coefficients() {
       const Wide a = j == 0 ? Wide(0) : Load::force_coefficient(c, Wide(j));
       t.force.push_back(Real(a));
       t.torque.push_back(Real(Load::torque_coefficient(c, Wide(j))));
+      t.slope.push_back(Real(2 * j * a));
+      t.curvature.push_back(Real(Wide(2 * j) * Wide(2 * j + 1) * a));
       // As elastic_series_terms: j a_j z^(j−1) against a₁ (zj = z^j here).
       if (j > 1 && Wide(j) * a * zj < tol * Wide(t.force[1]) * z) break;
       zj *= z;
     }
+    // n a_n z^(n−1) ≥ ε_mach a₁/64 (a term that still counts) where z ≥ the
+    // n-th threshold: (ε_mach a₁/(64 n a_n))^(1/(n−1)).
+    using std::pow;
+    t.threshold.assign(t.force.size(), Real(0));
+    for (std::size_t n = 2; n < t.force.size(); ++n)
+      t.threshold[n] =
+          Real(pow(tol * Wide(t.force[1]) / (Wide(n) * Wide(t.force[n])), 1 / Wide(n - 1)));
     return t;
   }();
   return table;
@@ -85,16 +103,12 @@ const elastic_coefficients<Real>& elastic_series_coefficients() {
 
 // The number of terms of (E3) that z = k² needs: the first n with
 // n a_n z^(n−1) below ε_mach a₁/64 (the derivative's terms 2n a_n z^n
-// relative to its first, 2a₁z; the values need fewer, but share the count).
+// relative to its first, 2a₁z; the values need fewer, but share the count),
+// by the thresholds in z of that condition (comparisons only).
 template <class Real>
 std::size_t elastic_series_terms(const elastic_coefficients<Real>& c, Real z) {
-  const Real tol = boost::math::tools::epsilon<Real>() / 64 * c.force[1];
   std::size_t n = 2;
-  Real zn = z;  // z^(n−1)
-  while (n + 1 < c.force.size() && Real(n) * c.force[n] * zn >= tol) {
-    zn *= z;
-    ++n;
-  }
+  while (n + 1 < c.force.size() && z >= c.threshold[n]) ++n;
   return n;
 }
 
@@ -107,7 +121,7 @@ force_torque_result<Real> elastic_series(Real eps, bool derivative) {
   const std::size_t n = elastic_series_terms(c, z);
   Real f = 0, t = 0;
   if (derivative) {
-    for (std::size_t j = n; j >= 1; --j) f = f * z + Real(2 * j) * c.force[j];
+    for (std::size_t j = n; j >= 1; --j) f = f * z + c.slope[j];
     f *= z;              // −ε𝓣′ = Σ 2j a_j z^j
     return {f * k, -f};  // 𝓕′ = k Σ 2j a_j z^j
   }
@@ -160,6 +174,15 @@ struct boussinesq_load {
   static Real outside_force_derivative(const elastic_outside<Real>& o) {
     return (o.a - o.w * o.k * o.k) / 2;
   }
+  // 𝓕″ = 0 inside; −k³/w outside, unbounded as ε → 1⁺.
+  template <class Real>
+  static Real inside_curvature(Real) {
+    return 0;
+  }
+  template <class Real>
+  static Real outside_curvature(const elastic_outside<Real>& o) {
+    return -(o.k * o.k * o.k) / o.w;
+  }
 };
 
 // p ∝ √(1 − r²): Hertz.  U = (3π/8)(2 − s²) inside, (3/4)[(2 − s²)asin(1/s) + √(s² − 1)] outside.
@@ -192,10 +215,21 @@ struct hertz_load {
     return {Real(3) / 16 * (e * ((2 - e) * (2 + e)) * o.a + o.w * (w2 + 3) * o.k),
             Real(3) / 64 * (((3 * w2 - 2) * w2 + 3) * o.a + 3 * o.w * (1 - w2))};
   }
-  // 𝓕′ = (3/16)[(1 − 3w²)A + w(1 + 3w²)k²].
+  // 𝓕′ = (3/16)[(1 - 3w²)A + w(1 + 3w²)k²].
   template <class Real>
   static Real outside_force_derivative(const elastic_outside<Real>& o) {
     return Real(3) / 16 * ((1 - 3 * o.w2) * o.a + o.w * (1 + 3 * o.w2) * o.k * o.k);
+  }
+  // 𝓕″ = −(9π/16)ε inside; (3/8)[3wk + 2wk³ − 3εA] outside, continuous at
+  // ε = 1 (where 𝓕‴ is unbounded, like √(ε − 1)).
+  template <class Real>
+  static Real inside_curvature(Real e) {
+    using boost::math::constants::pi;
+    return -9 * pi<Real>() / 16 * e;
+  }
+  template <class Real>
+  static Real outside_curvature(const elastic_outside<Real>& o) {
+    return Real(3) / 8 * (o.w * o.k * (3 + 2 * o.k * o.k) - 3 * o.eps * o.a);
   }
 };
 
@@ -224,29 +258,42 @@ force_torque_result<Real> elastic_at(Real eps, bool derivative) {
   return {Real(r.force), Real(r.torque)};
 }
 
-// 𝓕, 𝓣 and 𝓕′ at one ratio, for the limit-set projection, which needs all
-// three at each step (force_slope.hpp, fused_value_slope).
+// 𝓕, 𝓣, 𝓕′ and 𝓕″ at one ratio, for the limit-set projection, which needs
+// them at each step (force_slope.hpp, fused_value_slope).
 template <class Real>
 struct elastic_value_slope {
   force_torque_result<Real> value;  // 𝓕, 𝓣
   Real slope;                       // 𝓕′
+  Real curvature;                   // 𝓕″
 };
 
-// (E3) for the values and the derivative together: the same sums as
+// (E3) for the values and the derivatives together: the same sums as
 // elastic_series(ε, false) and elastic_series(ε, true), term for term, from
-// one z and one count (the count depends on z only).
+// one z and one count (the count depends on z only), and 𝓕″.
 template <class Load, class Real>
 elastic_value_slope<Real> elastic_series_value_slope(Real eps) {
   const auto& c = elastic_series_coefficients<Load, Real>();
   const Real k = 1 / eps, z = k * k;
   const std::size_t n = elastic_series_terms(c, z);
-  Real f = 0, t = 0, d = 0;
+  Real f = 0, t = 0, d = 0, dd = 0;
   for (std::size_t j = n; j >= 1; --j) {
     f = f * z + c.force[j];
     t = t * z + c.torque[j];
-    d = d * z + Real(2 * j) * c.force[j];
+    d = d * z + c.slope[j];
+    dd = dd * z + c.curvature[j];
   }
-  return {{1 - f * z, (t * z + c.torque[0]) * k}, d * z * k};
+  return {{1 - f * z, (t * z + c.torque[0]) * k}, d * z * k, -(dd * z * z)};
+}
+
+// 𝓕″ from (E3) alone (between the derivative's series start and the values').
+template <class Load, class Real>
+Real elastic_series_curvature(Real eps) {
+  const auto& c = elastic_series_coefficients<Load, Real>();
+  const Real k = 1 / eps, z = k * k;
+  const std::size_t n = elastic_series_terms(c, z);
+  Real dd = 0;
+  for (std::size_t j = n; j >= 1; --j) dd = dd * z + c.curvature[j];
+  return -(dd * z * z);
 }
 
 // 𝓕, 𝓣 and 𝓕′ of the load at 0 < ε < ∞, each exactly as elastic_at gives
@@ -257,22 +304,20 @@ template <class Load, class Real>
 elastic_value_slope<Real> elastic_value_and_slope(Real eps) {
   using W = elastic_arithmetic<Real>;
   const W& e = eps;
-  force_torque_result<W> v;
-  W d;
+  elastic_value_slope<W> r;
   if (e <= 1) {
-    v = Load::inside(e);
-    d = Load::inside_derivative(e).force;
+    r = {Load::inside(e), Load::inside_derivative(e).force, Load::inside_curvature(e)};
   } else if (e >= elastic_series_start<W>()) {
-    const auto both = elastic_series_value_slope<Load>(e);
-    v = both.value;
-    d = both.slope;
+    r = elastic_series_value_slope<Load>(e);
   } else {
+    // 𝓕″'s elementary form cancels too, as 𝓕′'s does: the same switch.
     const elastic_outside<W> o(e);
-    v = Load::outside(o);
-    d = e < elastic_derivative_series_start<W>() ? Load::outside_force_derivative(o)
-                                                 : elastic_series<Load>(e, true).force;
+    const bool series = e >= elastic_derivative_series_start<W>();
+    r = {Load::outside(o),
+         series ? elastic_series<Load>(e, true).force : Load::outside_force_derivative(o),
+         series ? elastic_series_curvature<Load>(e) : Load::outside_curvature(o)};
   }
-  return {{Real(v.force), Real(v.torque)}, Real(d)};
+  return {{Real(r.value.force), Real(r.value.torque)}, Real(r.slope), Real(r.curvature)};
 }
 
 // The derivatives at any ε ≥ 0 (𝓕′ = 0 and 𝓣′ = −0 at ε = ∞, where the

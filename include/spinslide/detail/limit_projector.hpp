@@ -71,8 +71,10 @@ class limit_projector {
     if (x_ + y_ / top_ <= 1) return sticking();  // inside the triangle (0,0), (1,0), (0,⟨r⟩)
     if (y_ == 0) return on_curve(inf(), {Real(1), Real(0)});  // x > 1: the corner (1, 0)
     if (x_ == 0) return on_curve(Real(0), {Real(0), top_});  // y > ⟨r⟩: the corner (0, ⟨r⟩)
-    lo_ = {Real(0), {Real(0), top_}, x_, Real(0)};
-    hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0)};
+    limit_projection<Real> warm{};
+    if (warm_newton(start, warm)) return warm;
+    lo_ = {Real(0), {Real(0), top_}, x_, Real(0), Real(0)};
+    hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0), Real(0)};
     sample a = evaluate(first_ratio(start));
     for (int i = 0; i < max_iterations; ++i) {
       if (inside_quadrilateral(a.ft)) return sticking();
@@ -92,11 +94,14 @@ class limit_projector {
 
  private:
   static constexpr int max_iterations = 200;
+  // Warm Newton steps before the safeguarded search takes over.
+  static constexpr int max_warm_iterations = 6;
   struct sample {
     Real eps;  // ε (0 and ∞ at the bracket's initial sides)
     force_torque_result<Real> ft;
-    Real h;      // (x − 𝓕) − wε(y − 𝓣), divided by w where w < 1 (evaluate)
-    Real slope;  // 𝓕′ where the profile gives it with the values (fused_value_slope)
+    Real h;          // (x − 𝓕) − wε(y − 𝓣), divided by w where w < 1 (evaluate)
+    Real slope;      // 𝓕′ where the profile gives it with the values (fused_value_slope)
+    Real curvature;  // 𝓕″ where bounded (warm_newton's Halley steps), else 0
   };
   enum class step_kind { search, converged, edge };
   struct step {
@@ -105,6 +110,96 @@ class limit_projector {
   };
 
   static Real inf() { return std::numeric_limits<Real>::infinity(); }
+
+  // The common case of a contact in steady slip, tried first: steps from
+  // the contact's last ratio without the bracket, in plain arithmetic, for a
+  // profile with a closed-form slope and where every factor of h and its
+  // slope stays within 2^±32 (so that no product of three can leave the
+  // normal numbers of any type, and plain products are product()'s).
+  // Halley's steps where 𝓕″ is bounded (Hertz), else Newton's.  It gives up,
+  // leaving `start` at its last ratio for the safeguarded search, as soon as
+  // a step leaves the asymptotic regime: h not halved, a step of half the
+  // ratio or more, or a slope that is not negative.  Otherwise it ends as
+  // that search does (the same sticking test on every sample, a convergence
+  // test for the step's order, the advance), so the result is the same to
+  // rounding.
+  bool warm_newton(Real& start, limit_projection<Real>& result) {
+    if constexpr (fused_value_slope<Profile>::value || has_force_slope<Profile>()) {
+      if (!(well_scaled(start) && well_scaled(w_) && x_ <= scale_limit() && y_ <= scale_limit()))
+        return false;
+      Real last_h = inf();
+      for (int i = 0; i < max_warm_iterations; ++i) {
+        const sample a = evaluate_slope(start);
+        const warm_outcome o = warm_iteration(a, last_h, start, result);
+        if (o != warm_outcome::stepped) return o == warm_outcome::done;
+      }
+    }
+    static_cast<void>(start);
+    static_cast<void>(result);
+    return false;
+  }
+  enum class warm_outcome { done, stepped, given_up };
+  // One warm step from the sample a: done (result set), stepped (`next` and
+  // `last_h` advanced) or given up.
+  warm_outcome warm_iteration(const sample& a, Real& last_h, Real& next,
+                              limit_projection<Real>& result) {
+    using std::fabs;
+    if (inside_quadrilateral(a.ft)) return result = sticking(), warm_outcome::done;
+    if (a.h == 0) return result = on_curve(a.eps, a.ft), warm_outcome::done;
+    const warm_step step = warm_step_from(a);
+    if (!(step.slope < 0) || !(fabs(a.h) <= last_h / 2)) return warm_outcome::given_up;
+    const Real r = fabs(step.eps - a.eps) / a.eps;
+    if (r <= boost::math::tools::epsilon<Real>()) return result = classify(a), warm_outcome::done;
+    const bool halley = step.order == 3;
+    if (r * r * (halley ? r : Real(1)) <= converged_product()) {
+      slope_ = a.slope;
+      curvature_ = halley ? a.curvature : Real(0);
+      return result = classify(advance(a, step.eps)), warm_outcome::done;
+    }
+    if (!(r < Real(0.5)) || !well_scaled(step.eps)) return warm_outcome::given_up;
+    next = step.eps;
+    last_h = fabs(a.h);
+    return warm_outcome::stepped;
+  }
+  static Real scale_limit() { return Real(4294967296.0); }  // 2^32
+  static bool well_scaled(Real v) { return v >= 1 / scale_limit() && v <= scale_limit(); }
+
+  struct warm_step {
+    Real eps;    // the next ratio
+    Real slope;  // dh/dε
+    int order;   // 3 for Halley's step, 2 for Newton's
+  };
+  // Newton's step n = −h/h′, or Halley's n/(1 + n h″/(2h′)) with
+  // h″ = −𝓕″(1 + wε²) − 3wε𝓕′ where 𝓕″ is bounded and the correction is
+  // below a half (further out, the step is not yet in Halley's regime).
+  warm_step warm_step_from(const sample& a) const {
+    using std::fabs;
+    const Real e = a.eps, dh = -(a.slope * (1 + w_ * e * e) + w_ * (y_ - a.ft.torque));
+    const Real newton = -a.h / dh;
+    if constexpr (fused_value_slope<Profile>::bounded_curvature) {
+      const Real d2h = -(a.curvature * (1 + w_ * e * e) + 3 * w_ * e * a.slope);
+      const Real c = newton * d2h / (2 * dh);
+      if (fabs(c) <= Real(0.5)) return {e + newton / (1 + c), dh, 3};
+    }
+    return {e + newton, dh, 2};
+  }
+
+  // 𝓕, 𝓣, 𝓕′ (and 𝓕″ where bounded) and h at ε, h in plain arithmetic
+  // (warm_newton).
+  sample evaluate_slope(Real eps) const {
+    sample a{eps, {}, Real(0), Real(0), Real(0)};
+    if constexpr (fused_value_slope<Profile>::value) {
+      const auto all = fused_value_slope<Profile>::at(profile_, eps);
+      a.ft = all.value;
+      a.slope = all.slope;
+      if constexpr (fused_value_slope<Profile>::bounded_curvature) a.curvature = all.curvature;
+    } else {
+      a.ft = profile_.force_torque(eps);
+      a.slope = force_slope(profile_, eps);
+    }
+    a.h = (x_ - a.ft.force) - w_ * eps * (y_ - a.ft.torque);
+    return a;
+  }
 
   // h, divided by w where w < 1 (the same root and signs): for a tiny w,
   // w(y − 𝓣) in the slope would otherwise be subnormal and carry no digits
@@ -122,18 +217,29 @@ class limit_projector {
     }
     const Real h = w_ < 1 ? (x_ - ft.force) / w_ - product(eps, y_ - ft.torque)
                           : (x_ - ft.force) - product(w_, eps, y_ - ft.torque);
-    return {eps, ft, h, slope};
+    return {eps, ft, h, slope, Real(0)};
   }
   // The curve point at the converged ratio `next`, from the last sample and
   // the slope of its Newton step, to first order: 𝓕 + 𝓕′Δ and 𝓣 − ε𝓕′Δ
   // (𝓣′ = −ε𝓕′).  Converged means r·max(r, the slope's uncertainty) ≤
   // epsilon^(4/3), r = |Δ|/ε (next_ratio), so the terms left out, of order
   // r² and r times the uncertainty, are below rounding: one evaluation of
-  // the profile saved per projection.
+  // the profile saved per projection.  After Halley's step (curvature_ set,
+  // r³ ≤ epsilon^(4/3)) to second order: 𝓕 + 𝓕′Δ + 𝓕″Δ²/2 and
+  // 𝓣 − ε(𝓕′Δ + 𝓕″Δ²/2) − 𝓕′Δ²/2 (𝓣″ = −𝓕′ − ε𝓕″), the terms left out of
+  // order r³.
   sample advance(const sample& a, Real next) const {
     const Real delta = next - a.eps;
-    const Real df = slope_ * delta;
-    return {next, {a.ft.force + df, a.ft.torque - a.eps * df}, Real(0), slope_};
+    if (curvature_ == 0) {
+      const Real df = slope_ * delta;
+      return {next, {a.ft.force + df, a.ft.torque - a.eps * df}, Real(0), slope_, Real(0)};
+    }
+    const Real df = (slope_ + curvature_ * delta / 2) * delta;
+    return {next,
+            {a.ft.force + df, a.ft.torque - a.eps * df - slope_ * delta * delta / 2},
+            Real(0),
+            slope_,
+            curvature_};
   }
 
   // dh/dε (h as evaluate() scales it) for a slope 𝓕′ = `slope`.
@@ -187,7 +293,8 @@ class limit_projector {
       const Real gap = fabs(a.eps - previous_.eps) / a.eps;
       if (gap > 0 && gap <= Real(0.1)) return secant_slope(a, previous_, gap);
       const Real e = a.eps * (1 + difference_step());
-      return secant_slope(a, {e, profile_.force_torque(e), Real(0), Real(0)}, difference_step());
+      return secant_slope(a, {e, profile_.force_torque(e), Real(0), Real(0), Real(0)},
+                          difference_step());
     }
   }
   // The secant of 𝓕 while 𝓕 ≤ 1/2; above, where 𝓕 approaches 1 and its
@@ -320,7 +427,8 @@ class limit_projector {
   Real x_, y_, w_, top_;
   sample lo_{}, hi_{}, previous_{};
   Real reach_ = 8;
-  Real slope_ = 0;  // 𝓕′ of the last Newton step (advance)
+  Real slope_ = 0;      // 𝓕′ of the last Newton step (advance)
+  Real curvature_ = 0;  // 𝓕″ of the last step if it was Halley's, else 0 (advance)
 };
 
 }  // namespace detail
