@@ -146,18 +146,20 @@ class limit_projector {
     using std::fabs;
     if (inside_quadrilateral(a.ft)) return result = sticking(), warm_outcome::done;
     if (a.h == 0) return result = on_curve(a.eps, a.ft), warm_outcome::done;
+    // 1/ε does not wait for the evaluation: one division off the steps' path.
+    const Real inverse = 1 / a.eps;
     const warm_step step = warm_step_from(a);
     if (!(step.slope < 0) || !(fabs(a.h) <= last_h / 2)) return warm_outcome::given_up;
-    const Real r = fabs(step.eps - a.eps) / a.eps;
+    const Real r = fabs(step.delta) * inverse, next_eps = a.eps + step.delta;
     if (r <= boost::math::tools::epsilon<Real>()) return result = classify(a), warm_outcome::done;
     const bool halley = step.order == 3;
     if (r * r * (halley ? r : Real(1)) <= converged_product()) {
       slope_ = a.slope;
       curvature_ = halley ? a.curvature : Real(0);
-      return result = classify(advance(a, step.eps)), warm_outcome::done;
+      return result = classify(advance(a, next_eps)), warm_outcome::done;
     }
-    if (!(r < Real(0.5)) || !well_scaled(step.eps)) return warm_outcome::given_up;
-    next = step.eps;
+    if (!(r < Real(0.5)) || !well_scaled(next_eps)) return warm_outcome::given_up;
+    next = next_eps;
     last_h = fabs(a.h);
     return warm_outcome::stepped;
   }
@@ -165,23 +167,24 @@ class limit_projector {
   static bool well_scaled(Real v) { return v >= 1 / scale_limit() && v <= scale_limit(); }
 
   struct warm_step {
-    Real eps;    // the next ratio
+    Real delta;  // the step in ε
     Real slope;  // dh/dε
     int order;   // 3 for Halley's step, 2 for Newton's
   };
   // Newton's step n = −h/h′, or Halley's n/(1 + n h″/(2h′)) with
-  // h″ = −𝓕″(1 + wε²) − 3wε𝓕′ where 𝓕″ is bounded and the correction is
-  // below a half (further out, the step is not yet in Halley's regime).
+  // h″ = −𝓕″(1 + wε²) − 3wε𝓕′ where 𝓕″ is bounded and the correction
+  // n h″/(2h′) is at most a half (further out, the step is not yet in
+  // Halley's regime), as −2hh′/(2h′² − hh″): one division, which the steps
+  // wait for.
   warm_step warm_step_from(const sample& a) const {
     using std::fabs;
     const Real e = a.eps, dh = -(a.slope * (1 + w_ * e * e) + w_ * (y_ - a.ft.torque));
-    const Real newton = -a.h / dh;
     if constexpr (fused_value_slope<Profile>::bounded_curvature) {
       const Real d2h = -(a.curvature * (1 + w_ * e * e) + 3 * w_ * e * a.slope);
-      const Real c = newton * d2h / (2 * dh);
-      if (fabs(c) <= Real(0.5)) return {e + newton / (1 + c), dh, 3};
+      const Real hd2h = a.h * d2h, dh2 = dh * dh;
+      if (fabs(hd2h) <= dh2) return {-2 * a.h * dh / (2 * dh2 - hd2h), dh, 3};
     }
-    return {e + newton, dh, 2};
+    return {-a.h / dh, dh, 2};
   }
 
   // 𝓕, 𝓣, 𝓕′ (and 𝓕″ where bounded) and h at ε, h in plain arithmetic
