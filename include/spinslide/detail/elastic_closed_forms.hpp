@@ -215,7 +215,7 @@ struct hertz_load {
     return {Real(3) / 16 * (e * ((2 - e) * (2 + e)) * o.a + o.w * (w2 + 3) * o.k),
             Real(3) / 64 * (((3 * w2 - 2) * w2 + 3) * o.a + 3 * o.w * (1 - w2))};
   }
-  // 𝓕′ = (3/16)[(1 - 3w²)A + w(1 + 3w²)k²].
+  // 𝓕′ = (3/16)[(1 − 3w²)A + w(1 + 3w²)k²].
   template <class Real>
   static Real outside_force_derivative(const elastic_outside<Real>& o) {
     return Real(3) / 16 * ((1 - 3 * o.w2) * o.a + o.w * (1 + 3 * o.w2) * o.k * o.k);

@@ -72,7 +72,7 @@ class limit_projector {
     if (y_ == 0) return on_curve(inf(), {Real(1), Real(0)});  // x > 1: the corner (1, 0)
     if (x_ == 0) return on_curve(Real(0), {Real(0), top_});  // y > ⟨r⟩: the corner (0, ⟨r⟩)
     limit_projection<Real> warm{};
-    if (warm_newton(start, warm)) return warm;
+    if (warm_steps(start, warm)) return warm;
     lo_ = {Real(0), {Real(0), top_}, x_, Real(0), Real(0)};
     hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0), Real(0)};
     sample a = evaluate(first_ratio(start));
@@ -94,14 +94,14 @@ class limit_projector {
 
  private:
   static constexpr int max_iterations = 200;
-  // Warm Newton steps before the safeguarded search takes over.
+  // Warm steps before the safeguarded search takes over.
   static constexpr int max_warm_iterations = 6;
   struct sample {
     Real eps;  // ε (0 and ∞ at the bracket's initial sides)
     force_torque_result<Real> ft;
     Real h;          // (x − 𝓕) − wε(y − 𝓣), divided by w where w < 1 (evaluate)
     Real slope;      // 𝓕′ where the profile gives it with the values (fused_value_slope)
-    Real curvature;  // 𝓕″ where bounded (warm_newton's Halley steps), else 0
+    Real curvature;  // 𝓕″ where bounded (warm_steps's Halley steps), else 0
   };
   enum class step_kind { search, converged, edge };
   struct step {
@@ -123,7 +123,7 @@ class limit_projector {
   // that search does (the same sticking test on every sample, a convergence
   // test for the step's order, the advance), so the result is the same to
   // rounding.
-  bool warm_newton(Real& start, limit_projection<Real>& result) {
+  bool warm_steps(Real& start, limit_projection<Real>& result) {
     if constexpr (fused_value_slope<Profile>::value || has_force_slope<Profile>()) {
       if (!(well_scaled(start) && well_scaled(w_) && x_ <= scale_limit() && y_ <= scale_limit()))
         return false;
@@ -188,7 +188,7 @@ class limit_projector {
   }
 
   // 𝓕, 𝓣, 𝓕′ (and 𝓕″ where bounded) and h at ε, h in plain arithmetic
-  // (warm_newton).
+  // (warm_steps).
   sample evaluate_slope(Real eps) const {
     sample a{eps, {}, Real(0), Real(0), Real(0)};
     if constexpr (fused_value_slope<Profile>::value) {
