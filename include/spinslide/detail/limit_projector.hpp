@@ -148,11 +148,11 @@ class limit_projector {
     if (a.h == 0) return result = on_curve(a.eps, a.ft), warm_outcome::done;
     // 1/ε does not wait for the evaluation: one division off the steps' path.
     const Real inverse = 1 / a.eps;
-    const warm_step step = warm_step_from(a);
-    if (!(step.slope < 0) || !(fabs(a.h) <= last_h / 2)) return warm_outcome::given_up;
-    const Real r = fabs(step.delta) * inverse, next_eps = a.eps + step.delta;
+    const warm_step next_step = warm_step_from(a);
+    if (!(next_step.slope < 0) || !(fabs(a.h) <= last_h / 2)) return warm_outcome::given_up;
+    const Real r = fabs(next_step.delta) * inverse, next_eps = a.eps + next_step.delta;
     if (r <= boost::math::tools::epsilon<Real>()) return result = classify(a), warm_outcome::done;
-    const bool halley = step.order == 3;
+    const bool halley = next_step.order == 3;
     if (r * r * (halley ? r : Real(1)) <= converged_product()) {
       slope_ = a.slope;
       curvature_ = halley ? a.curvature : Real(0);
