@@ -246,7 +246,7 @@ TEST(ElasticProfiles, DerivativesAtTheEndsAndBadRatios) {
 }  // namespace
 
 // The projection takes 𝓕, 𝓣 and 𝓕′ of Hertz and Boussinesq from one call
-// (detail::fused_value_slope); it must give force_torque's and
+// (detail::fused_value_slope, with 𝓕″ or without); it must give force_torque's and
 // force_derivative's values bit for bit (those are held to the references
 // above), on every branch: ε ≤ 1, the elementary forms below the derivative's
 // series start (13/10), the values' elementary forms with the derivative's
@@ -264,9 +264,12 @@ void expect_fused_equals_separate(const Profile& p) {
   int mismatches = 0;
   for (const Real e : ratios) {
     const auto both = spinslide::detail::fused_value_slope<Profile>::at(p, e);
+    const auto lean = spinslide::detail::fused_value_slope<Profile>::template at<false>(p, e);
     const auto ft = p.force_torque(e);
     const Real slope = p.force_derivative(e);
     if (!(both.value.force == ft.force && both.value.torque == ft.torque && both.slope == slope))
+      ++mismatches;
+    if (!(lean.value.force == ft.force && lean.value.torque == ft.torque && lean.slope == slope))
       ++mismatches;
   }
   EXPECT_EQ(mismatches, 0);

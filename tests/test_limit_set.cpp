@@ -67,9 +67,10 @@ struct fused_hertz : hertz<> {};
 template <>
 struct spinslide::detail::fused_value_slope<counted<fused_hertz>> : std::true_type {
   static constexpr bool bounded_curvature = true;
+  template <bool Curvature = true>
   static elastic_value_slope<double> at(const counted<fused_hertz>& p, double eps) {
     ++p.calls;
-    return fused_value_slope<hertz<>>::at(hertz<>(), eps);
+    return fused_value_slope<hertz<>>::at<Curvature>(hertz<>(), eps);
   }
 };
 

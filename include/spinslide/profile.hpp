@@ -217,15 +217,17 @@ elastic_value_slope<Real> capped(elastic_value_slope<Real> r) {
 template <class Real, class Policy>
 struct fused_value_slope<hertz<Real, Policy>> : std::true_type {
   static constexpr bool bounded_curvature = true;
+  template <bool Curvature = true>
   static elastic_value_slope<Real> at(const hertz<Real, Policy>&, Real eps) {
-    return capped(elastic_value_and_slope<hertz_load>(eps));
+    return capped(elastic_value_and_slope<hertz_load, Curvature>(eps));
   }
 };
 template <class Real, class Policy>
 struct fused_value_slope<boussinesq<Real, Policy>> : std::true_type {
   static constexpr bool bounded_curvature = false;  // −k³/w as ε → 1⁺
+  template <bool Curvature = true>
   static elastic_value_slope<Real> at(const boussinesq<Real, Policy>&, Real eps) {
-    return capped(elastic_value_and_slope<boussinesq_load>(eps));
+    return capped(elastic_value_and_slope<boussinesq_load, Curvature>(eps));
   }
 };
 }  // namespace detail

@@ -32,11 +32,12 @@ constexpr bool has_force_slope() {
   return has_member_force_derivative<P>::value;
 }
 
-/// Specialized (true, with static at(p, ε) giving 𝓕, 𝓣, 𝓕′ and 𝓕″ together
-/// for 0 < ε < ∞) by profiles whose closed forms share work between the
-/// values and the derivatives (Hertz and Boussinesq, profile.hpp); the
-/// limit-set projection then takes them from one call.  𝓕, 𝓣 and 𝓕′ are
-/// those of force_torque and force_slope, bit for bit.  bounded_curvature
+/// Specialized (true, with static at<Curvature = true>(p, ε) giving 𝓕, 𝓣, 𝓕′
+/// and, if Curvature, 𝓕″ together for 0 < ε < ∞) by profiles whose closed
+/// forms share work between the values and the derivatives (Hertz and
+/// Boussinesq, profile.hpp); the limit-set projection then takes them from
+/// one call.  𝓕, 𝓣 and 𝓕′ are those of force_torque and force_slope, bit
+/// for bit, with or without 𝓕″.  bounded_curvature
 /// says whether 𝓕″ is bounded (Hertz), so that the projection may take
 /// Halley's steps; Boussinesq's is unbounded at ε = 1.
 template <class P>

@@ -73,8 +73,8 @@ class limit_projector {
     if (x_ == 0) return on_curve(Real(0), {Real(0), top_});  // y > ⟨r⟩: the corner (0, ⟨r⟩)
     limit_projection<Real> warm{};
     if (warm_steps(start, warm)) return warm;
-    lo_ = {Real(0), {Real(0), top_}, x_, Real(0), Real(0)};
-    hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0), Real(0)};
+    lo_ = {Real(0), {Real(0), top_}, x_, Real(0)};
+    hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0)};
     sample a = evaluate(first_ratio(start));
     for (int i = 0; i < max_iterations; ++i) {
       if (inside_quadrilateral(a.ft)) return sticking();
@@ -99,9 +99,14 @@ class limit_projector {
   struct sample {
     Real eps;  // ε (0 and ∞ at the bracket's initial sides)
     force_torque_result<Real> ft;
-    Real h;          // (x − 𝓕) − wε(y − 𝓣), divided by w where w < 1 (evaluate)
-    Real slope;      // 𝓕′ where the profile gives it with the values (fused_value_slope)
-    Real curvature;  // 𝓕″ where bounded (warm_steps's Halley steps), else 0
+    Real h;      // (x − 𝓕) − wε(y − 𝓣), divided by w where w < 1 (evaluate)
+    Real slope;  // 𝓕′ where the profile gives it with the values (fused_value_slope)
+  };
+  // A warm step's sample: with 𝓕″ where bounded (Halley's steps), else 0.
+  // Apart, so that the safeguarded search's samples, which it copies, do
+  // not grow.
+  struct warm_sample : sample {
+    Real curvature;
   };
   enum class step_kind { search, converged, edge };
   struct step {
@@ -129,7 +134,7 @@ class limit_projector {
         return false;
       Real last_h = inf();
       for (int i = 0; i < max_warm_iterations; ++i) {
-        const sample a = evaluate_slope(start);
+        const warm_sample a = evaluate_slope(start);
         const warm_outcome o = warm_iteration(a, last_h, start, result);
         if (o != warm_outcome::stepped) return o == warm_outcome::done;
       }
@@ -141,7 +146,7 @@ class limit_projector {
   enum class warm_outcome { done, stepped, given_up };
   // One warm step from the sample a: done (result set), stepped (`next` and
   // `last_h` advanced) or given up.
-  warm_outcome warm_iteration(const sample& a, Real& last_h, Real& next,
+  warm_outcome warm_iteration(const warm_sample& a, Real& last_h, Real& next,
                               limit_projection<Real>& result) {
     using std::fabs;
     if (inside_quadrilateral(a.ft)) return result = sticking(), warm_outcome::done;
@@ -176,7 +181,7 @@ class limit_projector {
   // n h″/(2h′) is at most a half (further out, the step is not yet in
   // Halley's regime), as −2hh′/(2h′² − hh″): one division, which the steps
   // wait for.
-  warm_step warm_step_from(const sample& a) const {
+  warm_step warm_step_from(const warm_sample& a) const {
     using std::fabs;
     const Real e = a.eps, dh = -(a.slope * (1 + w_ * e * e) + w_ * (y_ - a.ft.torque));
     if constexpr (fused_value_slope<Profile>::bounded_curvature) {
@@ -189,13 +194,14 @@ class limit_projector {
 
   // 𝓕, 𝓣, 𝓕′ (and 𝓕″ where bounded) and h at ε, h in plain arithmetic
   // (warm_steps).
-  sample evaluate_slope(Real eps) const {
-    sample a{eps, {}, Real(0), Real(0), Real(0)};
+  warm_sample evaluate_slope(Real eps) const {
+    warm_sample a{{eps, {}, Real(0), Real(0)}, Real(0)};
     if constexpr (fused_value_slope<Profile>::value) {
-      const auto all = fused_value_slope<Profile>::at(profile_, eps);
+      constexpr bool curvature = fused_value_slope<Profile>::bounded_curvature;
+      const auto all = fused_value_slope<Profile>::template at<curvature>(profile_, eps);
       a.ft = all.value;
       a.slope = all.slope;
-      if constexpr (fused_value_slope<Profile>::bounded_curvature) a.curvature = all.curvature;
+      a.curvature = all.curvature;
     } else {
       a.ft = profile_.force_torque(eps);
       a.slope = force_slope(profile_, eps);
@@ -212,7 +218,7 @@ class limit_projector {
     force_torque_result<Real> ft;
     Real slope = 0;
     if constexpr (fused_value_slope<Profile>::value) {
-      const auto both = fused_value_slope<Profile>::at(profile_, eps);
+      const auto both = fused_value_slope<Profile>::template at<false>(profile_, eps);
       ft = both.value;
       slope = both.slope;
     } else {
@@ -220,7 +226,7 @@ class limit_projector {
     }
     const Real h = w_ < 1 ? (x_ - ft.force) / w_ - product(eps, y_ - ft.torque)
                           : (x_ - ft.force) - product(w_, eps, y_ - ft.torque);
-    return {eps, ft, h, slope, Real(0)};
+    return {eps, ft, h, slope};
   }
   // The curve point at the converged ratio `next`, from the last sample and
   // the slope of its Newton step, to first order: 𝓕 + 𝓕′Δ and 𝓣 − ε𝓕′Δ
@@ -235,14 +241,13 @@ class limit_projector {
     const Real delta = next - a.eps;
     if (curvature_ == 0) {
       const Real df = slope_ * delta;
-      return {next, {a.ft.force + df, a.ft.torque - a.eps * df}, Real(0), slope_, Real(0)};
+      return {next, {a.ft.force + df, a.ft.torque - a.eps * df}, Real(0), slope_};
     }
     const Real df = (slope_ + curvature_ * delta / 2) * delta;
     return {next,
             {a.ft.force + df, a.ft.torque - a.eps * df - slope_ * delta * delta / 2},
             Real(0),
-            slope_,
-            curvature_};
+            slope_};
   }
 
   // dh/dε (h as evaluate() scales it) for a slope 𝓕′ = `slope`.
@@ -296,8 +301,7 @@ class limit_projector {
       const Real gap = fabs(a.eps - previous_.eps) / a.eps;
       if (gap > 0 && gap <= Real(0.1)) return secant_slope(a, previous_, gap);
       const Real e = a.eps * (1 + difference_step());
-      return secant_slope(a, {e, profile_.force_torque(e), Real(0), Real(0), Real(0)},
-                          difference_step());
+      return secant_slope(a, {e, profile_.force_torque(e), Real(0), Real(0)}, difference_step());
     }
   }
   // The secant of 𝓕 while 𝓕 ≤ 1/2; above, where 𝓕 approaches 1 and its
