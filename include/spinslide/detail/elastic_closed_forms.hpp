@@ -286,15 +286,20 @@ elastic_value_slope<Real> elastic_series_value_slope(Real eps) {
   return {{1 - f * z, (t * z + c.torque[0]) * k}, d * z * k, -(dd * z * z)};
 }
 
-// 𝓕″ from (E3) alone (between the derivative's series start and the values').
-template <class Load, class Real>
-Real elastic_series_curvature(Real eps) {
+// 𝓕′ and, if Curvature, 𝓕″ (otherwise 0) from (E3) in one loop, between
+// the derivative's series start and the values': 𝓕′ the same sum as
+// elastic_series(ε, true), term for term.
+template <class Load, bool Curvature, class Real>
+elastic_value_slope<Real> elastic_series_slope(Real eps) {
   const auto& c = elastic_series_coefficients<Load, Real>();
   const Real k = 1 / eps, z = k * k;
   const std::size_t n = elastic_series_terms(c, z);
-  Real dd = 0;
-  for (std::size_t j = n; j >= 1; --j) dd = dd * z + c.curvature[j];
-  return -(dd * z * z);
+  Real d = 0, dd = 0;
+  for (std::size_t j = n; j >= 1; --j) {
+    d = d * z + c.slope[j];
+    if constexpr (Curvature) dd = dd * z + c.curvature[j];
+  }
+  return {{Real(0), Real(0)}, d * z * k, -(dd * z * z)};
 }
 
 // 𝓕, 𝓣 and 𝓕′ of the load at 0 < ε < ∞, each exactly as elastic_at gives
@@ -315,11 +320,13 @@ elastic_value_slope<Real> elastic_value_and_slope(Real eps) {
   } else {
     // 𝓕″'s elementary form cancels too, as 𝓕′'s does: the same switch.
     const elastic_outside<W> o(e);
-    const bool series = e >= elastic_derivative_series_start<W>();
-    r = {Load::outside(o),
-         series ? elastic_series<Load>(e, true).force : Load::outside_force_derivative(o), W(0)};
-    if constexpr (Curvature)
-      r.curvature = series ? elastic_series_curvature<Load>(e) : Load::outside_curvature(o);
+    if (e >= elastic_derivative_series_start<W>()) {
+      r = elastic_series_slope<Load, Curvature>(e);
+    } else {
+      r.slope = Load::outside_force_derivative(o);
+      r.curvature = Curvature ? Load::outside_curvature(o) : W(0);
+    }
+    r.value = Load::outside(o);
   }
   return {{Real(r.value.force), Real(r.value.torque)}, Real(r.slope), Real(r.curvature)};
 }
