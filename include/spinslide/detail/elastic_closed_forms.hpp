@@ -21,10 +21,14 @@
 // a sum of like-signed terms or nearly so: the elementary forms cancel as
 // ε → ∞ (𝓣 by a factor of about ε⁴), the series converge slowly as ε → 1.
 // float is evaluated in double; every other type in its own arithmetic.
+// Hertz in double and float takes a fixed-cost table from ε = 13/10 on
+// instead (hertz_fast.hpp): elastic_at and elastic_value_and_slope choose,
+// elastic_forms_at and elastic_forms_value_and_slope are the forms alone.
 #ifndef SPINSLIDE_DETAIL_ELASTIC_CLOSED_FORMS_HPP
 #define SPINSLIDE_DETAIL_ELASTIC_CLOSED_FORMS_HPP
 
 #include <spinslide/detail/checks.hpp>
+#include <spinslide/detail/hertz_fast.hpp>
 #include <spinslide/disk.hpp>
 
 #include <boost/math/constants/constants.hpp>
@@ -233,10 +237,18 @@ struct hertz_load {
   }
 };
 
+// Hertz in double (and so float) takes the fast path from ε = 13/10 on
+// (hertz_fast.hpp), in place of the series and of the elementary forms
+// between 13/10 and 3/2.
+template <class Load, class W>
+constexpr bool has_fast_elastic() {
+  return std::is_same<Load, hertz_load>::value && std::is_same<W, double>::value;
+}
+
 // 𝓕 and 𝓣, or (derivative) 𝓕′ and 𝓣′ = −ε𝓕′, of the load at 0 < ε < ∞,
-// in Real's evaluation arithmetic.
+// in Real's evaluation arithmetic, by the closed forms and the series alone.
 template <class Load, class Real>
-force_torque_result<Real> elastic_at(Real eps, bool derivative) {
+force_torque_result<Real> elastic_forms_at(Real eps, bool derivative) {
   using W = elastic_arithmetic<Real>;
   const W& e = eps;  // float: a double temporary; otherwise eps itself
   const W series_start =
@@ -256,6 +268,24 @@ force_torque_result<Real> elastic_at(Real eps, bool derivative) {
     r = elastic_series<Load>(e, derivative);
   }
   return {Real(r.force), Real(r.torque)};
+}
+
+// The same, by Hertz's fast path where it applies.
+template <class Load, class Real>
+force_torque_result<Real> elastic_at(Real eps, bool derivative) {
+  using W = elastic_arithmetic<Real>;
+  if constexpr (has_fast_elastic<Load, W>()) {
+    const W& e = eps;
+    if (e >= hertz_fast_start()) {
+      if (derivative) {
+        const W d = hertz_fast<false, true, false>(e).slope;
+        return {Real(d), Real(-e * d)};
+      }
+      const auto v = hertz_fast<true, false, false>(e);
+      return {Real(v.force), Real(v.torque)};
+    }
+  }
+  return elastic_forms_at<Load>(eps, derivative);
 }
 
 // 𝓕, 𝓣, 𝓕′ and 𝓕″ at one ratio, for the limit-set projection, which needs
@@ -302,13 +332,13 @@ elastic_value_slope<Real> elastic_series_slope(Real eps) {
   return {{Real(0), Real(0)}, d * z * k, -(dd * z * z)};
 }
 
-// 𝓕, 𝓣 and 𝓕′ of the load at 0 < ε < ∞, each exactly as elastic_at gives
-// it (the same branch and the same operations), sharing what the branches
+// 𝓕, 𝓣 and 𝓕′ of the load at 0 < ε < ∞, each exactly as elastic_forms_at
+// gives it (the same branch and the same operations), sharing what the branches
 // share: √(ε² − 1) and asin(1/ε) below the series, z and the term count in
 // them; and 𝓕″ if Curvature (otherwise 0: the projection's safeguarded
 // search does without it, and the series' fourth sum would cost it 11 %).
 template <class Load, bool Curvature, class Real>
-elastic_value_slope<Real> elastic_value_and_slope(Real eps) {
+elastic_value_slope<Real> elastic_forms_value_and_slope(Real eps) {
   using W = elastic_arithmetic<Real>;
   const W& e = eps;
   elastic_value_slope<W> r;
@@ -329,6 +359,20 @@ elastic_value_slope<Real> elastic_value_and_slope(Real eps) {
     r.value = Load::outside(o);
   }
   return {{Real(r.value.force), Real(r.value.torque)}, Real(r.slope), Real(r.curvature)};
+}
+
+// The same, by Hertz's fast path where it applies (elastic_at's branch).
+template <class Load, bool Curvature, class Real>
+elastic_value_slope<Real> elastic_value_and_slope(Real eps) {
+  using W = elastic_arithmetic<Real>;
+  if constexpr (has_fast_elastic<Load, W>()) {
+    const W& e = eps;
+    if (e >= hertz_fast_start()) {
+      const auto v = hertz_fast<true, true, Curvature>(e);
+      return {{Real(v.force), Real(v.torque)}, Real(v.slope), Real(v.curvature)};
+    }
+  }
+  return elastic_forms_value_and_slope<Load, Curvature>(eps);
 }
 
 // The derivatives at any ε ≥ 0 (𝓕′ = 0 and 𝓣′ = −0 at ε = ∞, where the
