@@ -374,6 +374,33 @@ template <class P>
 void projection_sticking_warm(benchmark::State& s) {
   projection<P>(s, false, true);
 }
+// The sliding cases from the curve point of the last step's answer (the
+// projection of C(ε') + 0.2(ε', 1), ε' = ε(1 + 1e-3): the warm start's ratio,
+// with 𝓕, 𝓣, 𝓕′ and 𝓕″ there), as a contact's history keeps it.
+template <class P>
+void projection_sliding_from_point(benchmark::State& s) {
+  const auto& cases = projection_cases<P>(true);
+  static const std::vector<spinslide::curve_point<double>> points = [&cases] {
+    std::vector<spinslide::curve_point<double>> v;
+    for (const auto& c : cases) {
+      const double e = c.start;
+      const auto ft = projected<P>().force_torque(e);
+      v.push_back(spinslide::project_to_limit_set(projected<P>(), ft.force + 0.2 * e,
+                                                  ft.torque + 0.2, 1.0,
+                                                  spinslide::starting_ratio<double>{e})
+                      .curve());
+    }
+    return v;
+  }();
+  for (auto _ : s) {
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      const auto r = spinslide::project_to_limit_set(projected<P>(), cases[i].force,
+                                                     cases[i].torque, 1.0, points[i]);
+      benchmark::DoNotOptimize(r);
+    }
+  }
+  s.SetItemsProcessed(s.iterations() * static_cast<int64_t>(cases.size()));
+}
 // The impulse law (impulse_friction.hpp) with a coupled inverse mass (a body
 // whose contact point has a lever arm): each input ratio ε gives a slip
 // (ε cos φ, ε sin φ, 1) with φ = ε; a normal impulse of 1e-3 lets every one
@@ -436,7 +463,8 @@ void impulse_sticking(benchmark::State& s) {
 }
 // The spring-history law (spring_friction.hpp), Mindlin springs: sliding
 // from the steady state of each ratio ε (the springs holding μN(𝓕, a𝓣)(ε),
-// the history's ratio ε, the next increment (εaΔφ, 0, Δφ)), which caps back
+// the history's ratio ε and its curve point, the next increment
+// (εaΔφ, 0, Δφ)), which caps back
 // onto the same point; sticking from relaxed springs and a small increment.
 struct spring_case {
   spinslide::spring_history<std::array<double, 2>, double> history;
@@ -464,6 +492,13 @@ const std::vector<spring_case>& spring_cases(bool sliding) {
           {{load * c.force / k.tangential.value, 0}, load * a * c.torque / k.twisting.value, e},
           {-e * a * dphi, 0},
           -dphi};
+      // the curve point the steady slip keeps (ε, 𝓕, 𝓣, 𝓕′, 𝓕″ at ε): the
+      // projection of a point on the normal at ε, from next to ε
+      sc.history.curve =
+          spinslide::project_to_limit_set(projected<P>(), c.force + 0.01 * 2 * e, c.torque + 0.01,
+                                          2.0, spinslide::starting_ratio<double>{e * (1 + 1e-4)})
+              .curve();
+      sc.history.ratio = sc.history.curve.ratio;
       if (!slide) sc = {{{0, 0}, 0, 0}, {1e-7, 0}, 1e-5};
       out.push_back(sc);
     }
@@ -495,16 +530,17 @@ template <class P>
 void spring_sticking(benchmark::State& s) {
   springs<P>(s, false);
 }
-#define SPINSLIDE_BENCH_PROJECTION(P)                  \
-  BENCHMARK_TEMPLATE(profile_force_torque, P);         \
-  BENCHMARK_TEMPLATE(profile_force_torque_chained, P); \
-  BENCHMARK_TEMPLATE(projection_sliding_warm, P);      \
-  BENCHMARK_TEMPLATE(projection_sliding_cold, P);      \
-  BENCHMARK_TEMPLATE(projection_sticking_warm, P);     \
-  BENCHMARK_TEMPLATE(impulse_sliding_warm, P);         \
-  BENCHMARK_TEMPLATE(impulse_sliding_cold, P);         \
-  BENCHMARK_TEMPLATE(impulse_sticking, P);             \
-  BENCHMARK_TEMPLATE(spring_sliding_warm, P);          \
+#define SPINSLIDE_BENCH_PROJECTION(P)                   \
+  BENCHMARK_TEMPLATE(profile_force_torque, P);          \
+  BENCHMARK_TEMPLATE(profile_force_torque_chained, P);  \
+  BENCHMARK_TEMPLATE(projection_sliding_warm, P);       \
+  BENCHMARK_TEMPLATE(projection_sliding_from_point, P); \
+  BENCHMARK_TEMPLATE(projection_sliding_cold, P);       \
+  BENCHMARK_TEMPLATE(projection_sticking_warm, P);      \
+  BENCHMARK_TEMPLATE(impulse_sliding_warm, P);          \
+  BENCHMARK_TEMPLATE(impulse_sliding_cold, P);          \
+  BENCHMARK_TEMPLATE(impulse_sticking, P);              \
+  BENCHMARK_TEMPLATE(spring_sliding_warm, P);           \
   BENCHMARK_TEMPLATE(spring_sticking, P);
 SPINSLIDE_BENCH_PROJECTION(spinslide::uniform_disk<>)
 SPINSLIDE_BENCH_PROJECTION(spinslide::hertz<>)
@@ -571,12 +607,14 @@ int main(int argc, char** argv) {
     const std::string base = std::string("profile_force_torque<") + p + ">";
     const std::string chained = std::string("profile_force_torque_chained<") + p + ">";
     for (const char* kind :
-         {"projection_sliding_warm", "projection_sliding_cold", "projection_sticking_warm",
-          "impulse_sliding_warm", "impulse_sliding_cold", "impulse_sticking", "spring_sliding_warm",
-          "spring_sticking"}) {
+         {"projection_sliding_warm", "projection_sliding_from_point", "projection_sliding_cold",
+          "projection_sticking_warm", "impulse_sliding_warm", "impulse_sliding_cold",
+          "impulse_sticking", "spring_sliding_warm", "spring_sticking"}) {
       reporter.add_comparison(std::string(kind) + "<" + p + ">", base);
       reporter.add_comparison(std::string(kind) + "<" + p + ">", chained);
     }
+    reporter.add_comparison(std::string("projection_sliding_from_point<") + p + ">",
+                            std::string("projection_sliding_warm<") + p + ">");
   }
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();

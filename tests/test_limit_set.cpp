@@ -374,6 +374,17 @@ TEST(LimitSet, UncoupledCapsClamp) {
   }
 }
 
+// Two projections of the same point: the same verdict and, sliding, the same
+// ratio (relative) and values (absolute) to the given tolerances.
+void expect_same_projection(const limit_projection<double>& a, const limit_projection<double>& b,
+                            double ratio_tolerance, double value_tolerance, double context) {
+  ASSERT_EQ(a.sticking, b.sticking) << context;
+  if (a.sticking) return;
+  EXPECT_NEAR(a.ratio / b.ratio, 1, ratio_tolerance) << context;
+  EXPECT_NEAR(a.force, b.force, value_tolerance) << context;
+  EXPECT_NEAR(a.torque, b.torque, value_tolerance) << context;
+}
+
 TEST(LimitSet, AStartingRatioGivesTheSameProjection) {
   const hertz<> p;
   const auto& pts = random_points();
@@ -382,11 +393,7 @@ TEST(LimitSet, AStartingRatioGivesTheSameProjection) {
     const auto cold = project_to_limit_set(p, x, y, 1.0);
     for (const double start : {1e-8, 0.01, 1.0, 100.0, 1e8}) {
       const auto warm = project_to_limit_set(p, x, y, 1.0, starting_ratio<double>{start});
-      ASSERT_EQ(warm.sticking, cold.sticking);
-      if (cold.sticking) continue;
-      EXPECT_NEAR(warm.ratio / cold.ratio, 1, 1e-12) << x << ", " << y << " from " << start;
-      EXPECT_NEAR(warm.force, cold.force, 1e-14);
-      EXPECT_NEAR(warm.torque, cold.torque, 1e-14);
+      expect_same_projection(warm, cold, 1e-12, 1e-14, start);
     }
   }
 }
@@ -419,10 +426,104 @@ TEST(LimitSet, NearbyStartTakesFewEvaluations) {
   expect_evaluations_from_nearby_start(counted<uniform_disk<>>(uniform_disk<>()), 5, 0);
 }
 
+// A sliding result's curve(): its ratio and values, with 𝓕′ there where the
+// profile has it in closed form (against the profile's own, to the order of
+// the last step's advance) and 𝓕″ after Halley's steps (Hertz; against the
+// difference of 𝓕′); NaN otherwise, and all NaN when it sticks.
+TEST(LimitSet, ASlidingResultCarriesTheCurvePoint) {
+  const hertz<> h;
+  for (const double eps : {0.05, 0.653, 1.2, 2.0, 50.0}) {
+    const auto c = h.force_torque(eps);
+    for (const double start : {0.0, eps * (1 + 1e-4)}) {
+      const auto r = project_to_limit_set(h, c.force + 0.3 * eps, c.torque + 0.3, 2.0,
+                                          starting_ratio<double>{start});
+      ASSERT_FALSE(r.sticking);
+      const auto p = r.curve();
+      EXPECT_EQ(p.ratio, r.ratio);
+      EXPECT_EQ(p.force, r.force);
+      EXPECT_EQ(p.torque, r.torque);
+      // Cold, the search's last step is Newton's, and 𝓕′ is the last sample's
+      // (off by about that step, below 1e-10); warm, Halley's, and advanced.
+      EXPECT_NEAR(p.slope / h.force_derivative(r.ratio), 1, start > 0 ? 1e-13 : 1e-9)
+          << eps << " from " << start;
+      if (start > 0) {  // the warm steps are Halley's
+        const double d = 1e-6 * r.ratio;
+        const double second =
+            (h.force_derivative(r.ratio + d) - h.force_derivative(r.ratio - d)) / (2 * d);
+        EXPECT_NEAR(p.curvature / second, 1, 1e-6) << eps;
+      }
+    }
+  }
+  const auto disk = project_to_limit_set(uniform_disk<>(), 1.5, 1.0, 1.0);
+  ASSERT_FALSE(disk.sticking);
+  EXPECT_TRUE(std::isnan(disk.slope));  // a secant's estimate is not reported
+  EXPECT_TRUE(std::isnan(disk.curvature));
+  const auto stick = project_to_limit_set(h, 0.1, 0.1, 1.0);
+  ASSERT_TRUE(stick.sticking);
+  EXPECT_TRUE(std::isnan(stick.curve().ratio));
+  EXPECT_TRUE(std::isnan(stick.curve().slope));
+}
+
+// From the curve point of the contact's last projection, the search takes
+// its first step without evaluating: one evaluation fewer than from that
+// point's ratio (here the whole count: 1 where 2), the same result.
+TEST(LimitSet, ACurvePointStartSavesTheFirstEvaluation) {
+  const counted<fused_hertz> h{fused_hertz()};
+  for (const double eps : {0.05, 0.653, 2.0, 50.0}) {
+    const auto c = h.force_torque(eps);
+    const double x = c.force + 0.3 * eps, y = c.torque + 0.3;
+    // the last step: a point that projected a little away, at 1.0001 ε
+    const auto last =
+        project_to_limit_set(h, x * 1.001, y * 0.999, 1.0, starting_ratio<double>{eps});
+    ASSERT_FALSE(last.sticking);
+    h.calls = 0;
+    const auto from_ratio = project_to_limit_set(h, x, y, 1.0, starting_ratio<double>{last.ratio});
+    const int by_ratio = h.calls;
+    h.calls = 0;
+    const auto from_point = project_to_limit_set(h, x, y, 1.0, last.curve());
+    EXPECT_EQ(h.calls, by_ratio - 1) << eps;
+    EXPECT_LE(h.calls, 1) << eps;
+    expect_same_projection(from_point, from_ratio, 1e-14, 1e-15, eps);
+  }
+}
+
+// A curve point that no projection returned (the values of another ratio,
+// a wrong slope or curvature, a point far off) only moves where the search
+// starts: the answer is the one of a cold search, and where P sticks it
+// sticks.
+TEST(LimitSet, AWrongCurvePointDoesNotChangeTheAnswer) {
+  const hertz<> h;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const double eps : {0.05, 0.653, 2.0, 50.0}) {
+    const auto c = h.force_torque(eps);
+    for (const double lambda : {0.3, -0.01}) {  // outside, and just inside (sticks)
+      const double x = lambda > 0 ? c.force + lambda * eps : c.force * (1 + lambda);
+      const double y = lambda > 0 ? c.torque + lambda : c.torque * (1 + lambda);
+      const auto cold = project_to_limit_set(h, x, y, 1.0);
+      const auto other = h.force_torque(3 * eps);
+      for (const curve_point<double>& bad :
+           {curve_point<double>{eps, other.force, other.torque, 0.1, -0.2},
+            curve_point<double>{eps, c.force, c.torque, -5.0, 100.0},
+            curve_point<double>{eps, c.force, c.torque, nan, nan},
+            curve_point<double>{1e-6, 0.9, 0.0, 1.0, 1.0},
+            curve_point<double>{eps, 1e300, -1e300, 1e300, nan}}) {
+        const auto r = project_to_limit_set(h, x, y, 1.0, bad);
+        expect_same_projection(r, cold, 1e-12, 1e-14, eps);
+      }
+    }
+  }
+}
+
 TEST(LimitSet, BadInputIsADomainError) {
   const uniform_disk<> p;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
+  // A sticking result's curve point (ratio NaN), or a negative ratio.
+  for (const double bad : {nan, -1.0})
+    EXPECT_THROW(project_to_limit_set(hertz<>(), 1.0, 1.0, 1.0,
+                                      curve_point<double>{bad, 0.5, 0.5, -0.1, -0.1}),
+                 std::domain_error)
+        << bad;
   for (const double bad : {-1.0, -0.0 - 1e-300, nan, inf}) {
     EXPECT_THROW(project_to_limit_set(p, bad, 0.5, 1.0), std::domain_error) << bad;
     EXPECT_THROW(project_to_limit_set(p, 0.5, bad, 1.0), std::domain_error) << bad;

@@ -111,6 +111,43 @@ TEST(SpringFriction, ASlipRewritesTheSprings) {
   EXPECT_NEAR(-r.torque, 3 * 0.01 * ft.torque, 1e-16);
 }
 
+// A slip keeps where it left the curve (history.curve: the ratio, 𝓕 and 𝓣
+// of the result in units of μN and μNa, 𝓕′ there); the next step starts from
+// it, and ends where a start from the ratio alone ends (to rounding), and
+// where a history without it (built with three fields) ends.
+TEST(SpringFriction, ASlipKeepsItsCurvePointForTheNextStep) {
+  const auto k = mindlin_springs(tangential_stiffness<double>{2e4}, patch_radius<double>{0.01});
+  const hertz<> p;
+  spring_history<vec2, double> h{{0, 0}, 0, 0};
+  EXPECT_EQ(h.curve.ratio, 0);
+  EXPECT_TRUE(std::isnan(h.curve.slope));
+  auto r = spring_history_friction(p, h, vec2{1e-3, 0}, 0.5, k, contact(0.01, 10, 0.3));
+  ASSERT_FALSE(r.sticking);
+  EXPECT_EQ(h.curve.ratio, h.ratio);
+  EXPECT_NEAR(h.curve.force, -r.force[0] / 3, 1e-15);
+  EXPECT_NEAR(h.curve.torque, -r.torque / (3 * 0.01), 1e-15);
+  EXPECT_NEAR(h.curve.slope / p.force_derivative(h.ratio), 1, 1e-9);
+  int slips = 0;
+  for (int step = 0; step < 20; ++step) {
+    // the next step, from the kept point and from the ratio alone
+    auto by_ratio = h;
+    by_ratio.curve = {};  // not at the ratio: ignored
+    const vec2 inc{2e-5 * std::cos(step), 1e-5 * std::sin(step)};
+    const double twist = 0.02 * std::cos(0.3 * step);
+    const auto a = spring_history_friction(p, h, inc, twist, k, contact(0.01, 10, 0.3));
+    const auto b = spring_history_friction(p, by_ratio, inc, twist, k, contact(0.01, 10, 0.3));
+    ASSERT_EQ(a.sticking, b.sticking) << step;
+    EXPECT_NEAR(a.force[0], b.force[0], 1e-14) << step;
+    EXPECT_NEAR(a.force[1], b.force[1], 1e-14) << step;
+    EXPECT_NEAR(a.torque, b.torque, 1e-16) << step;
+    if (!a.sticking) {
+      ++slips;
+      EXPECT_NEAR(a.ratio / b.ratio, 1, 1e-12) << step;
+    }
+  }
+  EXPECT_GE(slips, 10);
+}
+
 TEST(SpringFriction, MindlinTwistingStiffness) {
   const auto k = mindlin_springs(tangential_stiffness<double>{3e4}, patch_radius<double>{0.02});
   EXPECT_DOUBLE_EQ(k.twisting.value, 3e4 * 0.02 * 0.02 / 2);

@@ -17,7 +17,7 @@
 // from the centre, and the springs are not advanced during setup.
 //
 // The contact history (spinslide_lammps::kHistSize values: the tangential
-// spring, the twisting spring, the last ratio eps) is one per atom (a sphere
+// spring, the twisting spring, the last slip's curve point) is one per atom (a sphere
 // touches at most one of two parallel walls), kept in `history`, which moves
 // with its atom between processes and into restart files.
 

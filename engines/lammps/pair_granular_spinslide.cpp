@@ -17,8 +17,9 @@
 // pair_style granular (coupling no, the same arithmetic, step for step).
 // The friction acts at the contact point, r - d/2 from each centre.
 //
-// Per-contact history (FixNeighHistory, kHistSize = 5 values): the
-// tangential spring (3, lab frame), the twisting spring, the last ratio eps.
+// Per-contact history (FixNeighHistory, kHistSize = 9 values): the
+// tangential spring (3, lab frame), the twisting spring, and where the last
+// slip left the limit curve (eps, F, T, F', F'': the next search's start).
 
 #include "pair_granular_spinslide.h"
 #include "keywords.h"
@@ -477,7 +478,7 @@ double PairGranularSpinslide::radii2cut(double r1, double r2) { return r1 + r2; 
    spring's displacement changes sign with the normal; the twisting spring's
    angle does not (the relative spin about the normal is the same seen from
    either sphere), unless `twist_transfer negate` (pair_style granular's
-   convention); the ratio does not
+   convention); the curve point does not
 ------------------------------------------------------------------------- */
 
 void PairGranularSpinslide::transfer_history(double* source, double* target) {
@@ -485,5 +486,5 @@ void PairGranularSpinslide::transfer_history(double* source, double* target) {
   target[kHistShear + 1] = -source[kHistShear + 1];
   target[kHistShear + 2] = -source[kHistShear + 2];
   target[kHistTwist] = twist_negate ? -source[kHistTwist] : source[kHistTwist];
-  target[kHistRatio] = source[kHistRatio];
+  for (int k = kHistRatio; k < kHistSize; ++k) target[k] = source[k];
 }

@@ -55,8 +55,9 @@ namespace spinslide_lammps {
 enum : int {
   kHistShear = 0,  ///< tangential spring displacement, 3 components (lab frame)
   kHistTwist = 3,  ///< twisting spring angle
-  kHistRatio = 4,  ///< the last slipping ratio eps (0: none), warm start
-  kHistSize = 5
+  kHistRatio = 4,  ///< where the last slip left the limit curve (a spinslide::curve_point):
+                   ///< eps (0: none), then F, T, F' and F'' there, the warm start
+  kHistSize = 9
 };
 
 /// The effective Young's modulus E* of two materials (Hertz).
@@ -149,6 +150,15 @@ inline bool friction_uncoupled(double* h, const double* vtr, double twist_rate, 
   return capped;
 }
 
+// The history's curve point (kHistRatio and the four values after it).
+inline void store_curve_point(const spinslide::curve_point<double>& p, double* h) {
+  h[kHistRatio] = p.ratio;
+  h[kHistRatio + 1] = p.force;
+  h[kHistRatio + 2] = p.torque;
+  h[kHistRatio + 3] = p.slope;
+  h[kHistRatio + 4] = p.curvature;
+}
+
 // The coupled cap on spinslide's Hertz limit set, at the load `load` = mu N
 // with patch radius a.  Throws what project_to_limit_set throws.
 inline bool friction_coupled(double* h, const double* vtr, double twist_rate, double kt,
@@ -175,13 +185,17 @@ inline bool friction_coupled(double* h, const double* vtr, double twist_rate, do
     if (!std::isfinite(f) || !std::isfinite(t)) {
       capped = true;  // a vanishing load against a finite trial: no friction
     } else {
+      // The search's first step from the last slip's curve point, without
+      // evaluating the profile (zeros, a new contact: no start).
+      const double* c = h + kHistRatio;
       const spinslide::limit_projection<double> p = spinslide::project_to_limit_set(
-          hertz_patch(), f, t, kTorqueWeight, spinslide::starting_ratio<double>{h[kHistRatio]});
+          hertz_patch(), f, t, kTorqueWeight,
+          spinslide::curve_point<double>{c[0], c[1], c[2], c[3], c[4]});
       if (p.sticking) return false;
       capped = true;
       fscale = fmag > 0.0 ? p.force * load / fmag : 0.0;
       mcap = std::copysign(p.torque * load * a, mt);
-      if (!std::isnan(p.ratio)) h[kHistRatio] = p.ratio;
+      if (!std::isnan(p.ratio)) store_curve_point(p.curve(), h);
     }
   } else {
     capped = true;  // no load, no friction

@@ -65,7 +65,8 @@ constexpr void require_projectable() {
 
 template <class Profile, class Real>
 limit_projection<Real> project_checked(const Profile& profile, Real force, Real torque,
-                                       Real torque_weight, Real start, const char* function) {
+                                       Real torque_weight, Real start, const char* function,
+                                       const curve_point<Real>* from = nullptr) {
   require_projectable<Profile, Real>();
   using Policy = typename Profile::policy_type;
   const Policy pol;
@@ -78,7 +79,7 @@ limit_projection<Real> project_checked(const Profile& profile, Real force, Real 
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     return {nan, nan, false, nan};
   }
-  return limit_projector<Profile>(profile, f, t, w)(s, function);
+  return limit_projector<Profile>(profile, f, t, w)(s, function, from);
 }
 
 // What the 3-D projection requires besides: a limit curve without corners
@@ -145,6 +146,21 @@ limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, 
   return detail::project_checked(
       profile, force, torque, torque_weight, start.value,
       "spinslide::project_to_limit_set<%1%>(profile, %1%, %1%, %1%, starting_ratio)");
+}
+
+/// As above, searching from where the contact's last projection left the
+/// curve (its result's curve(), from a slip: ratio ≥ 0, else a domain
+/// error): the search takes its first step from that point's 𝓕, 𝓣, 𝓕′ and
+/// 𝓕″ without evaluating the profile, one evaluation fewer than from its
+/// ratio alone.  The point must be one that a projection with the same
+/// profile returned; the result does not depend on it (to rounding): no
+/// answer is taken from its values, only a step.
+template <class Profile, class Real>
+limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, Real torque,
+                                            Real torque_weight, const curve_point<Real>& start) {
+  return detail::project_checked(
+      profile, force, torque, torque_weight, start.ratio,
+      "spinslide::project_to_limit_set<%1%>(profile, %1%, %1%, %1%, curve_point)", &start);
 }
 
 /// The point of the 3-D limit set L₃ = {(f_x, f_y, t) : (|f|, |t|) ∈ L} nearest

@@ -37,6 +37,12 @@ struct spring_history {
   Vec2 displacement;  ///< the tangential spring's stretch ξ (the force is −k_t ξ)
   Real twist;         ///< the twisting spring's angle φ (the torque is −k_θ φ)
   Real ratio;         ///< ε at the last slipping step, to start the next search (0: none)
+  /// Where the last slip left the limit curve (limit_projection::curve()):
+  /// the next search takes its first step from its 𝓕, 𝓣, 𝓕′ and 𝓕″ without
+  /// evaluating the profile, if its ratio is `ratio` (else `ratio` alone
+  /// starts it).  Written by every slip; a history built without it works.
+  curve_point<Real> curve{Real(0), Real(0), Real(0), std::numeric_limits<Real>::quiet_NaN(),
+                          std::numeric_limits<Real>::quiet_NaN()};
 };
 
 /// The friction of one spring-history contact over one step.
@@ -65,7 +71,8 @@ spring_stiffness<Real> mindlin_springs(tangential_stiffness<Real> kt, patch_radi
 /// Every input finite, the stiffnesses and a > 0, N and μ ≥ 0, all of the
 /// profile's value_type; otherwise a domain error (and the history is left
 /// as it was).  No allocation; when it slips, a few evaluations of the
-/// profile (fewer from the history's ratio).
+/// profile (fewer from the history's ratio, and one fewer again from its
+/// curve point).
 template <class Profile, class Vec2>
 spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
     const Profile& profile, spring_history<Vec2, typename Profile::value_type>& history,
@@ -129,8 +136,11 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
   const Real load = mu * n;
   limit_projection<Real> cap{0, 0, f == 0 && t == 0, std::numeric_limits<Real>::quiet_NaN()};
   if (load > 0) {
-    cap = project_to_limit_set(profile, f / load, std::fabs(t) / a / load, a * a * kt / kw,
-                               starting_ratio<Real>{start});
+    // From the kept curve point if it is at the ratio, else from the ratio
+    // alone.
+    cap = detail::project_checked(profile, Real(f / load), Real(std::fabs(t) / a / load),
+                                  Real(a * a * kt / kw), start, function,
+                                  history.curve.ratio == start ? &history.curve : nullptr);
   }
   out.sticking = cap.sticking;
   out.ratio = cap.ratio;
@@ -155,7 +165,10 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
   detail::set<0>(history.displacement, sx);
   detail::set<1>(history.displacement, sy);
   history.twist = sphi;
-  if (!out.sticking && !(boost::math::isnan)(cap.ratio)) history.ratio = cap.ratio;
+  if (!out.sticking && !(boost::math::isnan)(cap.ratio)) {
+    history.ratio = cap.ratio;
+    history.curve = cap.curve();
+  }
   return out;
 }
 

@@ -44,6 +44,20 @@
 
 namespace spinslide {
 
+/// A point of a profile's limit curve as a projection left it
+/// (limit_projection::curve()): the ratio ε and 𝓕, 𝓣, 𝓕′ and 𝓕″ there.
+/// Passed to the next projection of the same contact with the same profile
+/// (project_to_limit_set, limit_set.hpp), it lets that search take its first
+/// step without evaluating the profile.
+template <class Real>
+struct curve_point {
+  Real ratio;      ///< ε
+  Real force;      ///< 𝓕(ε)
+  Real torque;     ///< 𝓣(ε)
+  Real slope;      ///< 𝓕′(ε) (NaN: unknown, and the point serves as a ratio only)
+  Real curvature;  ///< 𝓕″(ε) (NaN: unknown, and the first step is Newton's)
+};
+
 /// The point of a profile's limit set nearest to a given (force, torque)
 /// (project_to_limit_set, limit_set.hpp).
 template <class Real>
@@ -52,6 +66,13 @@ struct limit_projection {
   Real torque;    ///< t = |T|/(μNa) of the nearest point of L
   bool sticking;  ///< true if the given point lies in L (then returned unchanged)
   Real ratio;  ///< the ratio ε of the curve point (NaN if sticking; +∞ at (1, 0), 0 at (0, ⟨r⟩))
+  /// 𝓕′ at `ratio`, where the profile has it in closed form and the point is
+  /// on the curve between the ends (else NaN).
+  Real slope = std::numeric_limits<Real>::quiet_NaN();
+  /// 𝓕″ at `ratio`, where the projection's last step was Halley's (else NaN).
+  Real curvature = std::numeric_limits<Real>::quiet_NaN();
+  /// Where this projection left the curve, to start the contact's next one from.
+  curve_point<Real> curve() const { return {ratio, force, torque, slope, curvature}; }
 };
 
 namespace detail {
@@ -66,24 +87,27 @@ class limit_projector {
   limit_projector(const Profile& profile, Real x, Real y, Real w)
       : profile_(profile), x_(x), y_(y), w_(w), top_(profile.mean_radius()) {}
 
-  // The projection, searching from `start` (a ratio; 0 or ∞: no guess).
-  limit_projection<Real> operator()(Real start, const char* function) {
+  // The projection, searching from `start` (a ratio; 0 or ∞: no guess), or
+  // from the curve point `from` (at the ratio `start`) if given.
+  limit_projection<Real> operator()(Real start, const char* function,
+                                    const curve_point<Real>* from = nullptr) {
     if (x_ + y_ / top_ <= 1) return sticking();  // inside the triangle (0,0), (1,0), (0,⟨r⟩)
     if (y_ == 0) return on_curve(inf(), {Real(1), Real(0)});  // x > 1: the corner (1, 0)
     if (x_ == 0) return on_curve(Real(0), {Real(0), top_});  // y > ⟨r⟩: the corner (0, ⟨r⟩)
     limit_projection<Real> warm{};
-    if (warm_steps(start, warm)) return warm;
+    if (warm_steps(start, from, warm)) return warm;
     lo_ = {Real(0), {Real(0), top_}, x_, Real(0)};
     hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0)};
     sample a = evaluate(first_ratio(start));
     for (int i = 0; i < max_iterations; ++i) {
       if (inside_quadrilateral(a.ft)) return sticking();
-      if (a.h == 0) return on_curve(a.eps, a.ft);
+      if (a.h == 0) return on_sample(a, fused_value_slope<Profile>::value ? a.slope : nan(), nan());
       narrow(a);
       const step next = next_ratio(a);
       if (next.kind == step_kind::edge) return on_edge();
       if (next.kind == step_kind::converged)
-        return next.eps == a.eps ? classify(a) : classify(advance(a, next.eps));
+        return next.eps == a.eps ? classify(a, search_slope(slope_), nan())
+                                 : classify(advance(a, next.eps), search_slope(slope_), nan());
       previous_ = a;
       a = evaluate(next.eps);
     }
@@ -115,6 +139,14 @@ class limit_projector {
   };
 
   static Real inf() { return std::numeric_limits<Real>::infinity(); }
+  static Real nan() { return std::numeric_limits<Real>::quiet_NaN(); }
+  // The slope a result of the safeguarded search reports: where the profile
+  // has 𝓕′ in closed form (not a secant's estimate), else NaN.
+  static Real search_slope(Real slope) {
+    if constexpr (fused_value_slope<Profile>::value || has_force_slope<Profile>()) return slope;
+    static_cast<void>(slope);
+    return nan();
+  }
 
   // The common case of a contact in steady slip, tried first: steps from
   // the contact's last ratio without the bracket, in plain arithmetic, for a
@@ -128,11 +160,12 @@ class limit_projector {
   // that search does (the same sticking test on every sample, a convergence
   // test for the step's order, the advance), so the result is the same to
   // rounding.
-  bool warm_steps(Real& start, limit_projection<Real>& result) {
+  bool warm_steps(Real& start, const curve_point<Real>* from, limit_projection<Real>& result) {
     if constexpr (fused_value_slope<Profile>::value || has_force_slope<Profile>()) {
       if (!(well_scaled(start) && well_scaled(w_) && x_ <= scale_limit() && y_ <= scale_limit()))
         return false;
       Real last_h = inf();
+      if (from) step_from_point(*from, start);
       for (int i = 0; i < max_warm_iterations; ++i) {
         const warm_sample a = evaluate_slope(start);
         const warm_outcome o = warm_iteration(a, last_h, start, result);
@@ -140,8 +173,25 @@ class limit_projector {
       }
     }
     static_cast<void>(start);
+    static_cast<void>(from);
     static_cast<void>(result);
     return false;
+  }
+  // The first warm step from a curve point that a previous projection left
+  // (no evaluation): `start` moves to where it leads if it is a regular warm
+  // step (a negative slope, less than half the ratio, well scaled), and is
+  // left at the point's ratio otherwise.  Nothing is decided on this sample
+  // (no sticking test, no convergence, and the next sample need not halve
+  // its h): the point is the caller's, and every result rests on the
+  // profile's own values.  A NaN 𝓕″ gives Newton's step (warm_step_from).
+  void step_from_point(const curve_point<Real>& c, Real& start) const {
+    using std::fabs;
+    warm_sample a{{c.ratio, {c.force, c.torque}, Real(0), c.slope}, c.curvature};
+    a.h = (x_ - a.ft.force) - w_ * a.eps * (y_ - a.ft.torque);
+    if (!((boost::math::isfinite)(a.h) && (boost::math::isfinite)(a.slope))) return;
+    const warm_step s = warm_step_from(a);
+    const Real next = a.eps + s.delta;
+    if (s.slope < 0 && fabs(s.delta) < a.eps / 2 && well_scaled(next)) start = next;
   }
   enum class warm_outcome { done, stepped, given_up };
   // One warm step from the sample a: done (result set), stepped (`next` and
@@ -150,18 +200,20 @@ class limit_projector {
                               limit_projection<Real>& result) {
     using std::fabs;
     if (inside_quadrilateral(a.ft)) return result = sticking(), warm_outcome::done;
-    if (a.h == 0) return result = on_curve(a.eps, a.ft), warm_outcome::done;
+    if (a.h == 0) return result = on_sample(a, a.slope, a.curvature), warm_outcome::done;
     // 1/ε does not wait for the evaluation: one division off the steps' path.
     const Real inverse = 1 / a.eps;
     const warm_step next_step = warm_step_from(a);
     if (!(next_step.slope < 0) || !(fabs(a.h) <= last_h / 2)) return warm_outcome::given_up;
     const Real r = fabs(next_step.delta) * inverse, next_eps = a.eps + next_step.delta;
-    if (r <= boost::math::tools::epsilon<Real>()) return result = classify(a), warm_outcome::done;
+    if (r <= boost::math::tools::epsilon<Real>())
+      return result = classify(a, a.slope, a.curvature), warm_outcome::done;
     const bool halley = next_step.order == 3;
     if (r * r * (halley ? r : Real(1)) <= converged_product()) {
       slope_ = a.slope;
       curvature_ = halley ? a.curvature : Real(0);
-      return result = classify(advance(a, next_eps)), warm_outcome::done;
+      const sample b = advance(a, next_eps);
+      return result = classify(b, b.slope, halley ? a.curvature : nan()), warm_outcome::done;
     }
     if (!(r < Real(0.5)) || !well_scaled(next_eps)) return warm_outcome::given_up;
     next = next_eps;
@@ -236,7 +288,8 @@ class limit_projector {
   // the profile saved per projection.  After Halley's step (curvature_ set,
   // r³ ≤ epsilon^(4/3)) to second order: 𝓕 + 𝓕′Δ + 𝓕″Δ²/2 and
   // 𝓣 − ε(𝓕′Δ + 𝓕″Δ²/2) − 𝓕′Δ²/2 (𝓣″ = −𝓕′ − ε𝓕″), the terms left out of
-  // order r³.
+  // order r³.  The sample's slope is 𝓕′ at `next` to the same order less
+  // one (𝓕′ + 𝓕″Δ after Halley's step, 𝓕′ of the last sample otherwise).
   sample advance(const sample& a, Real next) const {
     const Real delta = next - a.eps;
     if (curvature_ == 0) {
@@ -247,7 +300,7 @@ class limit_projector {
     return {next,
             {a.ft.force + df, a.ft.torque - a.eps * df - slope_ * delta * delta / 2},
             Real(0),
-            slope_};
+            slope_ + curvature_ * delta};
   }
 
   // dh/dε (h as evaluate() scales it) for a slope 𝓕′ = `slope`.
@@ -392,9 +445,11 @@ class limit_projector {
     return r;
   }
 
-  limit_projection<Real> classify(const sample& a) const {
+  // A converged sample: sticking after all (inside its quadrilateral), else
+  // the result, with 𝓕′ and 𝓕″ there as known.
+  limit_projection<Real> classify(const sample& a, Real slope, Real curvature) const {
     if (inside_quadrilateral(a.ft)) return sticking();
-    return on_curve(a.eps, a.ft);
+    return on_sample(a, slope, curvature);
   }
 
   // The nearest point of the chord between the bracket's sides (an edge of
@@ -428,6 +483,9 @@ class limit_projector {
   }
   static limit_projection<Real> on_curve(Real ratio, const force_torque_result<Real>& c) {
     return {c.force, c.torque, false, ratio};
+  }
+  static limit_projection<Real> on_sample(const sample& a, Real slope, Real curvature) {
+    return {a.ft.force, a.ft.torque, false, a.eps, slope, curvature};
   }
 
   const Profile& profile_;
