@@ -135,12 +135,15 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
   if (detail::any_reported(fx, fy, t, f)) return reported(f + fx + fy + t);
   const Real load = mu * n;
   limit_projection<Real> cap{0, 0, f == 0 && t == 0, std::numeric_limits<Real>::quiet_NaN()};
+  curve_point<Real> kept = history.curve;  // the next step's, if this one slips
   if (load > 0) {
     // From the kept curve point if it is at the ratio, else from the ratio
     // alone.
-    cap = detail::project_checked(profile, Real(f / load), Real(std::fabs(t) / a / load),
-                                  Real(a * a * kt / kw), start, function,
-                                  history.curve.ratio == start ? &history.curve : nullptr);
+    const limit_projection<Real> p = detail::project_checked(
+        profile, Real(f / load), Real(std::fabs(t) / a / load), Real(a * a * kt / kw), start,
+        function, history.curve.ratio == start ? &history.curve : nullptr);
+    cap = {p.force, p.torque, p.sticking, p.ratio};
+    if (!p.sticking && !(boost::math::isnan)(p.ratio)) kept = p.curve();
   }
   out.sticking = cap.sticking;
   out.ratio = cap.ratio;
@@ -165,10 +168,8 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
   detail::set<0>(history.displacement, sx);
   detail::set<1>(history.displacement, sy);
   history.twist = sphi;
-  if (!out.sticking && !(boost::math::isnan)(cap.ratio)) {
-    history.ratio = cap.ratio;
-    history.curve = cap.curve();
-  }
+  if (!out.sticking && !(boost::math::isnan)(cap.ratio)) history.ratio = cap.ratio;
+  history.curve = kept;
   return out;
 }
 
