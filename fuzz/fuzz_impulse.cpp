@@ -23,8 +23,6 @@
 #include <spinslide/limit_set.hpp>
 #include <spinslide/spring_friction.hpp>
 
-#include <boost/math/policies/error_handling.hpp>
-
 #include <array>
 #include <cmath>
 #include <limits>
@@ -86,24 +84,20 @@ double force_bound(double limit) {
 // is held to: ⟨r⟩ in [1e-2, 1e2] (its torque axis against the force's unit
 // axis).  Beyond (an elliptic limit surface with τ = 3e4 or 1e9, a profile
 // scaled below a radius of 1e-2) Newton was seen to stall or to stop at a
-// point that is not the nearest: documented (docs/theory.md §11), not held.
+// point that is not the nearest: documented (docs/theory.md §11), not held
+// to the checks (but it must answer).
 template <class P>
 bool proportionate(const P& p) {
   const double top = p.mean_radius();
   return top >= 1e-2 && top <= 1e2;
 }
 
-// Runs `call`; false (results unchecked) where the limit set is not
-// proportionate and the call raised evaluation_error or must not be held to
-// the checks; an evaluation_error elsewhere is a failure and propagates.
+// Runs `call` (which must not throw for valid input: since issue 26 the
+// projection never raises evaluation_error, whatever the proportions);
+// true where the results are held to the checks: a proportionate limit set.
 template <class P, class Call>
 bool converges(const P& p, Call call) {
-  try {
-    call();
-  } catch (const boost::math::evaluation_error&) {
-    if (proportionate(p)) throw;
-    return false;
-  }
+  call();
   return proportionate(p);
 }
 

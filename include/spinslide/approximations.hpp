@@ -99,6 +99,8 @@ class elliptic_limit_surface
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class pade_approximation : public profile_base<pade_approximation<Real, Policy>, Real, Policy> {
  public:
+  /// 𝓣′ ≠ −ε𝓕′: no pressure gives these curves (obeys_maximum_dissipation).
+  static constexpr bool maximum_dissipation = false;
   /// The approximants for the moments ⟨r⟩, ⟨1/r⟩, ⟨r²⟩ (each finite and at
   /// least the smallest normal number, otherwise std::domain_error); the
   /// defaults are the uniform disk's.

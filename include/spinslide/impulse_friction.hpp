@@ -133,7 +133,7 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
   // (Divided by a, then by the load: μΛa itself may be subnormal.)
   const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / a / load};
   const wrench_projection<Real> r =
-      detail::metric_projector<Profile>(profile, target, metric, inverse)(s0, function);
+      detail::metric_projector<Profile>(profile, target, metric, inverse)(s0);
   out.sticking = r.sticking;
   out.ratio = r.ratio;
   detail::set<0>(out.linear, r.sticking ? stop[0] : Real(load * r.point.force_x));

@@ -45,11 +45,6 @@ struct is_uncoupled_caps : std::false_type {};
 template <class Real, class Policy>
 struct is_uncoupled_caps<uncoupled_caps<Real, Policy>> : std::true_type {};
 
-template <class P>
-struct is_pade_approximation : std::false_type {};
-template <class Real, class Policy>
-struct is_pade_approximation<pade_approximation<Real, Policy>> : std::true_type {};
-
 // What every projection requires of its profile and arguments, at compile time.
 template <class Profile, class Real>
 constexpr void require_projectable() {
@@ -57,10 +52,10 @@ constexpr void require_projectable() {
   static_assert(std::is_same<Real, typename Profile::value_type>::value,
                 "project_to_limit_set: the arguments (force, torque and torque_weight, or the "
                 "wrench and the metric) must have the profile's value_type");
-  static_assert(!is_pade_approximation<Profile>::value,
-                "project_to_limit_set: the Pade approximants do not obey T' = -eps F' (no pressure "
-                "gives them), so the curve's normal is not (eps, 1) and the projection does not "
-                "apply");
+  static_assert(obeys_maximum_dissipation<Profile>::value,
+                "project_to_limit_set: this profile's curve does not obey T' = -eps F' (the Pade "
+                "approximants, also tabulated, scaled or in a weighted sum: no pressure gives "
+                "them), so its normal is not (eps, 1) and the projection does not apply");
 }
 
 template <class Profile, class Real>
@@ -79,7 +74,7 @@ limit_projection<Real> project_checked(const Profile& profile, Real force, Real 
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     return {nan, nan, false, nan};
   }
-  return limit_projector<Profile>(profile, f, t, w)(s, function, from);
+  return limit_projector<Profile>(profile, f, t, w)(s, from);
 }
 
 // What the 3-D projection requires besides: a limit curve without corners
@@ -112,7 +107,7 @@ wrench_projection<Real> project_wrench_checked(const Profile& profile,
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     return {{nan, nan, nan}, false, nan};
   }
-  return metric_projector<Profile>(profile, z, metric.entries(), metric.inverse())(s, function);
+  return metric_projector<Profile>(profile, z, metric.entries(), metric.inverse())(s);
 }
 
 }  // namespace detail

@@ -243,6 +243,8 @@ class scaled : public profile_base<scaled<Profile>, typename Profile::value_type
   using Policy = typename Profile::policy_type;
 
  public:
+  /// P's (obeys_maximum_dissipation): shrinking keeps the curve's normals.
+  static constexpr bool maximum_dissipation = obeys_maximum_dissipation<Profile>::value;
   /// `p` shrunk to radius a = `radius` ∈ [√min_value, 1] (a² a normal number,
   /// so that a²⟨r²⟩ does not underflow); otherwise std::domain_error.
   scaled(Profile p, Real radius)
@@ -293,6 +295,9 @@ class weighted_sum
  public:
   /// The number of parts.
   static constexpr std::size_t size = sizeof...(Profiles);
+  /// Every part's (obeys_maximum_dissipation): a sum of curves with normals
+  /// (ε, 1) has them too, one with a part that has not, in general not.
+  static constexpr bool maximum_dissipation = (obeys_maximum_dissipation<Profiles>::value && ...);
   /// Load fractions `weights` (normalised; each finite and ≥ 0, sum > 0,
   /// otherwise std::domain_error) of the `parts`.
   weighted_sum(const std::array<Real, size>& weights, Profiles... parts)

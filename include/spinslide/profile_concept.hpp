@@ -76,6 +76,19 @@ template <class P>
 struct is_friction_profile
     : std::integral_constant<bool, detail::profile_expressions<std::decay_t<P>>::value> {};
 
+/// True if `P`'s limit curve (𝓕(ε), 𝓣(ε)) has the outward normal (ε, 1) at
+/// every ε, that is 𝓣′ = −ε𝓕′ (maximum dissipation: docs/theory.md §1).
+/// Every pressure distribution obeys it, and so do the elliptic limit
+/// surface and the uncoupled caps; the limit-set projections rely on it.  A
+/// profile that does not (the Padé approximants) declares
+/// `static constexpr bool maximum_dissipation = false;`, and the profiles
+/// built from others (scaled, weighted_sum, tabulated_profile) pass it on.
+template <class P, class = void>
+struct obeys_maximum_dissipation : std::true_type {};
+template <class P>
+struct obeys_maximum_dissipation<P, std::void_t<decltype(std::decay_t<P>::maximum_dissipation)>>
+    : std::integral_constant<bool, std::decay_t<P>::maximum_dissipation> {};
+
 #if defined(__cpp_concepts)
 /// The friction profile concept (C++20): the same requirements as is_friction_profile.
 template <class P>

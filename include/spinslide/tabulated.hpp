@@ -33,9 +33,19 @@ namespace spinslide {
 /// a second for quadrature profiles) and allocates; force_torque() then
 /// allocates nothing and touches only const data, so one object may be
 /// shared by any number of threads.
-template <class Real = double, class Policy = boost::math::policies::policy<>>
-class tabulated_profile : public profile_base<tabulated_profile<Real, Policy>, Real, Policy> {
+///
+/// The table keeps whether its curve obeys maximum dissipation
+/// (obeys_maximum_dissipation), so that a projection onto the limit set of
+/// a tabulated Padé approximant does not compile: the default table is of
+/// a profile that obeys it, and tabulating one that does not (the Padé
+/// approximants) takes `tabulated_profile<Real, Policy, false>`.
+template <class Real = double, class Policy = boost::math::policies::policy<>,
+          bool MaximumDissipation = true>
+class tabulated_profile
+    : public profile_base<tabulated_profile<Real, Policy, MaximumDissipation>, Real, Policy> {
  public:
+  /// As tabulated (obeys_maximum_dissipation).
+  static constexpr bool maximum_dissipation = MaximumDissipation;
   /// The degree of every piece.
   static constexpr std::size_t degree = 8;
 
@@ -52,6 +62,10 @@ class tabulated_profile : public profile_base<tabulated_profile<Real, Policy>, R
     const auto edges = detail::singular_ratios(profile);
     for (std::size_t i = 0; i < edges.size(); ++i) singular_.add(static_cast<Real>(edges[i]));
     static_assert(detail::requires_profile<Profile>());
+    static_assert(!MaximumDissipation || obeys_maximum_dissipation<Profile>::value,
+                  "tabulated_profile: this profile's curve does not obey T' = -eps F' (the Pade "
+                  "approximants), which tabulated_profile<Real, Policy> promises; tabulate it as "
+                  "tabulated_profile<Real, Policy, false>, which the limit-set projections refuse");
     const Real tol = detail::checked_constructor_argument<Policy>(
         "spinslide::tabulated_profile<%1%>::tabulated_profile(profile, %1%, max_depth)",
         "tolerance", tolerance, detail::argument_rule::finite_positive);

@@ -10,10 +10,17 @@
 // function of the contact (1-homogeneous and convex; ∇D is the friction law,
 // (𝓕 s_f/|s_f|, 𝓣 sign s_t)).  So s is the minimum of the strictly convex
 //   Ψ(s) = ½ sᵀM⁻¹s + D(s) − zᵀs,
-// found by Newton's method with a backtracking line search.  Whatever the
-// iteration's error, ∇D(s) lies on the curve (to the profile's rounding) with
-// s along its normal (ε d, sign s_t): only nearness is iterated.  Inside L₃
-// (decided on the magnitudes by the 2-D projection) s = 0: sticking.
+// found by Newton's method with a line search on the sign of Ψ's slope
+// (which keeps its digits where Ψ's differences round away: newton()).
+// Whatever the iteration's error, ∇D(s) lies on the curve (to the profile's
+// rounding) with s along its normal (ε d, sign s_t): only nearness is
+// iterated, and it never fails: every step lowers Ψ, and the iteration ends
+// when Newton's decrement is within the rounding of ∇Ψ's terms, which
+// leaves the nearest point to a few ulp times the metric's condition number
+// (tests/test_metric_projection.cpp, in float, double, long double and
+// cpp_bin_float_50).  Every bound is the type's own (epsilon, the normal
+// numbers' range).  Inside L₃ (decided on the magnitudes by the 2-D
+// projection) s = 0: sticking.
 #ifndef SPINSLIDE_DETAIL_METRIC_PROJECTOR_HPP
 #define SPINSLIDE_DETAIL_METRIC_PROJECTOR_HPP
 
@@ -22,7 +29,8 @@
 #include <spinslide/detail/matrix3.hpp>
 #include <spinslide/planar_metric.hpp>
 
-#include <boost/math/policies/error_handling.hpp>
+#include <boost/math/special_functions/fpclassify.hpp>
+#include <boost/math/tools/precision.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -64,32 +72,41 @@ class metric_projector {
   }
 
   // The projection; `start`: a ratio to search from (0 or ∞: none).
-  wrench_projection<Real> operator()(Real start, const char* function) {
+  wrench_projection<Real> operator()(Real start) {
+    using std::fabs;
     if (largest(z_) > far()) return support_point();
     // With a start: if z lies beyond the support plane of L₃ with the normal
     // n at the start's curve point (zᵀn > D(n) = max over L₃ of pᵀn), z is
     // outside and n a descent direction: Newton from there, one evaluation.
     if (start > 0 && start < std::numeric_limits<Real>::infinity()) {
       const ray r = normal_ray(start, p_.force_torque(start));
-      if (r.resolved) return descend(r, function);
+      if (r.resolved) return descend(r);
     }
     // Otherwise the 2-D projection decides sticking on the magnitudes and
     // gives the curve point, along z's direction, to start from.
     const limit_projection<Real> flat = limit_projector<Profile>(
-        p_, length(z_[0], z_[1]), std::fabs(z_[2]), torque_weight())(start, function);
+        p_, length(z_[0], z_[1]), fabs(z_[2]), torque_weight())(start);
     if (flat.sticking) return {{z_[0], z_[1], z_[2]}, true, std::numeric_limits<Real>::quiet_NaN()};
     const ray r = normal_ray(flat.ratio, {flat.force, flat.torque});
-    if (r.resolved) return descend(r, function);
+    if (r.resolved) return descend(r);
     // No gain beyond rounding (z outside L₃ only by rounding): the 2-D answer
     // itself, on the curve and within rounding of z.
     return result_on_ray(r, {flat.force, flat.torque}, flat.ratio);
   }
 
  private:
-  // Beyond this distance from L₃ (whose points are O(1)) the nearest point
-  // is the support point below to within 1e-150, and Ψ's terms would
-  // overflow.
-  static Real far() { return Real(1e150); }
+  // Beyond this distance from L₃ (whose points are O(1)) Ψ's quadratic term
+  // could overflow (|z|² of the largest value over 256), and the nearest
+  // point is the support point below to rounding: its direction is off by
+  // about κ|p|/|z|, within rounding once |z| > κ/ε_mach, which is below
+  // this bound in every type for the condition numbers planar_metric
+  // accepts (3e23 against 8e152 in double, 7e10 against 1e18 in float).
+  static Real far() {
+    using std::sqrt;
+    static const Real bound = sqrt(boost::math::tools::max_value<Real>()) / 16;
+    return bound;
+  }
+  static Real epsilon() { return std::numeric_limits<Real>::epsilon(); }
 
   // For z far from L₃: the point of L₃ whose outward normal is along
   // M(z − p) ≈ Mz, relatively within |p|/|z|: at the ratio
@@ -97,7 +114,8 @@ class metric_projector {
   wrench_projection<Real> support_point() const {
     const Real scale = largest(z_);
     const vec u = multiply(m_, vec{z_[0] / scale, z_[1] / scale, z_[2] / scale});
-    const Real along = length(u[0], u[1]), across = std::fabs(u[2]);
+    using std::fabs;
+    const Real along = length(u[0], u[1]), across = fabs(u[2]);
     const Real eps = across > 0 ? Real(along / across) : std::numeric_limits<Real>::infinity();
     const force_torque_result<Real> c = p_.force_torque(along > 0 ? eps : Real(0));
     const Real fx = along > 0 ? Real(u[0] / along) : Real(0);
@@ -127,7 +145,8 @@ class metric_projector {
     r.n = {nf * r.dx, nf * r.dy, z_[2] < 0 ? Real(-nt) : nt};
     const Real along = dot(z_, r.n), support = nf * c.force + nt * c.torque;
     r.gain = along - support;
-    r.resolved = r.gain > 8 * std::numeric_limits<Real>::epsilon() * (std::fabs(along) + support);
+    using std::fabs;
+    r.resolved = r.gain > 8 * epsilon() * (fabs(along) + support);
     return r;
   }
 
@@ -135,9 +154,9 @@ class metric_projector {
   // least at τ = gain/(nᵀM⁻¹n) > 0, where Ψ < 0.  Every later iterate keeps
   // Ψ below that, away from the kink at s = 0, where a start in a poor
   // direction (an ill-conditioned M) would make the iteration collapse.
-  wrench_projection<Real> descend(const ray& r, const char* function) const {
+  wrench_projection<Real> descend(const ray& r) const {
     const Real tau = r.gain / dot(r.n, multiply(inverse_, r.n));
-    return newton(point({tau * r.n[0], tau * r.n[1], tau * r.n[2]}), function);
+    return newton(point({tau * r.n[0], tau * r.n[1], tau * r.n[2]}));
   }
 
   wrench_projection<Real> result_on_ray(const ray& r, const force_torque_result<Real>& c,
@@ -154,6 +173,7 @@ class metric_projector {
     vec grad_d{};  // ∇D(s): the point of the curve
     Real psi = 0;
     Real psi_scale = 0;  // the sum of |Ψ|'s terms: its rounding is a few ulp of it
+    vec ms{};            // M⁻¹s
   };
 
   // The torque's weight relative to the force's for the 2-D start and test
@@ -161,14 +181,15 @@ class metric_projector {
   Real torque_weight() const {
     const auto& m = m_;
     const Real w = 2 * m[2][2] / (m[0][0] + m[1][1]);
-    return std::isfinite(w) && w > 0 ? w : Real(1);
+    return (boost::math::isfinite)(w) && w > 0 ? w : Real(1);
   }
 
   point_data point(const vec& s) const {
     point_data d;
     d.s = s;
     d.along = length(s[0], s[1]);
-    d.across = std::fabs(s[2]);
+    using std::fabs;
+    d.across = fabs(s[2]);
     d.eps = d.across > 0 ? Real(d.along / d.across) : std::numeric_limits<Real>::infinity();
     if (d.along == 0) d.eps = 0;
     d.ft = p_.force_torque(d.eps);
@@ -177,12 +198,12 @@ class metric_projector {
                 s[2] > 0   ? d.ft.torque
                 : s[2] < 0 ? Real(-d.ft.torque)
                            : Real(0)};
-    const vec ms = multiply(inverse_, s);
-    const Real quadratic = dot(s, ms) / 2,
+    d.ms = multiply(inverse_, s);
+    const Real quadratic = dot(s, d.ms) / 2,
                dissipation = d.along * d.ft.force + d.across * d.ft.torque;
     const Real linear = dot(z_, s);
     d.psi = quadratic + dissipation - linear;
-    d.psi_scale = std::fabs(quadratic) + dissipation + std::fabs(linear);
+    d.psi_scale = fabs(quadratic) + dissipation + fabs(linear);
     return d;
   }
 
@@ -193,7 +214,9 @@ class metric_projector {
     if constexpr (has_force_slope<Profile>()) {
       return force_slope(p_, d.eps);
     } else {
-      const Real step = d.eps * Real(1.0 / 67108864);  // 2⁻²⁶
+      using std::sqrt;
+      static const Real relative = sqrt(epsilon());
+      const Real step = d.eps * relative;
       const auto next = p_.force_torque(d.eps + step);
       return d.ft.force <= Real(0.5) ? Real((next.force - d.ft.force) / step)
                                      : Real((d.ft.torque - next.torque) / (step * d.eps));
@@ -226,7 +249,7 @@ class metric_projector {
       q = small ? Real(d.ft.force / d.eps) : d.ft.force;
       scale = small ? 1 / d.across : 1 / d.along;
     }
-    if (!std::isfinite(a)) a = 0;  // ⟨1/r⟩ = ∞: left to the line search
+    if (!(boost::math::isfinite)(a)) a = 0;  // ⟨1/r⟩ = ∞: left to the line search
     const Real dd[2] = {dx, dy};
     for (std::size_t i = 0; i < 2; ++i) {
       for (std::size_t j = 0; j < 2; ++j)
@@ -237,48 +260,87 @@ class metric_projector {
     return h;
   }
 
-  // Newton's method on Ψ from s: the step solves (M⁻¹ + ∇²D)δ = −∇Ψ, halved
-  // while it does not lower Ψ by 10⁻⁴ of its promise (beyond Ψ's rounding,
-  // so that near the minimum the full step is taken).  Converged when the
-  // step is below 4 ulp of s, or when, below √ε_mach of s, a step did not
-  // shrink to half the last full one (there Newton's steps shrink
-  // quadratically, with an approximate slope at least linearly: this is the
-  // rounding floor of ∇Ψ, a difference of terms of the size of z).
-  wrench_projection<Real> newton(point_data x, const char* function) const {
-    using std::sqrt;
-    const Real tiny = 4 * std::numeric_limits<Real>::epsilon();
-    const Real near = sqrt(std::numeric_limits<Real>::epsilon());
-    Real last_full = std::numeric_limits<Real>::infinity();
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      vec g{};
+  // Newton's method on Ψ from s: the step δ solves (M⁻¹ + ∇²D)δ = −∇Ψ, and
+  // the line search moves along it by the sign of Ψ's slope ∇Ψ·δ, which is
+  // known to the rounding of ∇Ψ's terms (a few ulp of z's size), not by Ψ's
+  // values, whose differences round away first: with a metric conditioned
+  // near its limit a decrease of Ψ of 1e-19 is all a step of ∇Ψ = 1e-7 can
+  // show, below Ψ's rounding, and a line search on values stalls there.
+  // Converged when Newton's decrement −∇Ψ·δ is within that rounding (no
+  // direction left in which Ψ falls that this type can show) or the step is
+  // below 4 ulp of s.  Never fails: every iterate is on the curve with s along
+  // its normal, each step lowers the strictly convex Ψ (convexity, below),
+  // and after max_newton_iterations (never reached in the tests) the last
+  // iterate is the answer.
+  wrench_projection<Real> newton(point_data x) const {
+    const Real tiny = 4 * epsilon();
+    for (int iteration = 0; iteration < max_newton_iterations; ++iteration) {
+      const vec g = gradient(x);
       const vec step = newton_step(x, g);
-      const Real move = largest(step), size = largest(x.s);
-      if (move <= tiny * size || (move <= near * size && move > last_full / 2)) return result(x);
-      Real t = 1;
-      const point_data y = line_search(x, step, dot(g, step), t);
-      if (t == 0) return result(x);  // Ψ cannot be lowered further in this type
-      last_full = t == 1 ? move : std::numeric_limits<Real>::infinity();
-      x = y;
+      const directional start = along(x, g, step);
+      if (!(start.slope < -start.rounding) || largest(step) <= tiny * largest(x.s))
+        return result(x);
+      if (!line_search(x, step, start, x)) return result(x);
     }
-    // A stall (seen with metrics conditioned near the limit and targets near
-    // the curve's ends, fuzz_impulse): accepted where the optimality residual
-    // ∇Ψ is below √ε_mach of z's size, the answer then on the curve and
-    // nearest to that accuracy; an evaluation error otherwise.
-    vec g{};
-    newton_step(x, g);
-    using std::sqrt;
-    if (largest(g) <= sqrt(std::numeric_limits<Real>::epsilon()) * (1 + largest(z_)))
-      return result(x);
-    const Real bad = boost::math::policies::raise_evaluation_error<Real>(
-        function, "The metric projection did not converge (last ratio %1%).", x.eps,
-        typename Profile::policy_type());
-    return {{bad, bad, bad}, false, bad};
+    return result(x);
+  }
+  static constexpr int max_newton_iterations = 100;
+  static constexpr int max_line_steps = 60;
+
+  // ∇Ψ·δ at a point, and the bound of its rounding: a few ulp of the sum of
+  // the magnitudes of its terms (M⁻¹s, ∇D, whose profile values are good to
+  // a few ulp, and z) along δ.
+  struct directional {
+    Real slope, rounding;
+  };
+  directional along(const point_data& x, const vec& g, const vec& step) const {
+    using std::fabs;
+    Real sum = 0, size = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      Real row = 0;
+      for (std::size_t j = 0; j < 3; ++j) row += fabs(inverse_[i][j] * x.s[j]);
+      sum += g[i] * step[i];
+      size += (row + fabs(x.grad_d[i]) + fabs(z_[i])) * fabs(step[i]);
+    }
+    return {sum, epsilon() * size};
   }
 
-  // δ = −(M⁻¹ + ∇²D)⁻¹∇Ψ, and ∇Ψ = M⁻¹s + ∇D − z in `g`.
-  vec newton_step(const point_data& x, vec& g) const {
-    const vec ms = multiply(inverse_, x.s);
-    for (std::size_t i = 0; i < 3; ++i) g[i] = ms[i] + x.grad_d[i] - z_[i];
+  // ∇Ψ = M⁻¹s + ∇D − z.
+  vec gradient(const point_data& x) const {
+    return {x.ms[0] + x.grad_d[0] - z_[0], x.ms[1] + x.grad_d[1] - z_[1],
+            x.ms[2] + x.grad_d[2] - z_[2]};
+  }
+
+  // A point s + tδ where Ψ is lower, into `next`; false if there is none
+  // beyond rounding.  Along the line φ(t) = Ψ(s + tδ) is convex with
+  // φ′(0) < 0, so wherever φ′(t) ≤ 0, φ fell all the way from 0 to t: t is
+  // taken.  So is a t where φ′ rose to at most half |φ′(0)| and Ψ is no
+  // higher to its rounding (near the line's minimum, as a Newton step near
+  // the answer).  Otherwise the minimum lies before t: the next t is the
+  // secant root of φ′ between 0 and t, kept within [t/10, 9t/10].  A t
+  // taken with φ′(t) ≤ 0 and φ′(t/θ) > 0 for the last rejected t/θ
+  // (θ ≥ 1/10) lowers Ψ by at least a tenth of what the exact line search
+  // would (convexity), which keeps Newton's method globally convergent.
+  bool line_search(const point_data& x, const vec& step, const directional& start,
+                   point_data& next) const {
+    const Real floor = 4 * epsilon() * largest(x.s);
+    Real t = 1;
+    for (int k = 0; k < max_line_steps && t * largest(step) > floor; ++k) {
+      point_data y = point(shifted(x.s, step, t));
+      const directional d = along(y, gradient(y), step);
+      const Real slack = 4 * epsilon() * (x.psi_scale + y.psi_scale);
+      if (d.slope <= 0 || (d.slope <= -start.slope / 2 && y.psi <= x.psi + slack)) {
+        next = y;
+        return true;
+      }
+      const Real secant = t * (-start.slope) / (d.slope - start.slope);
+      t = (std::min)((std::max)(secant, t / 10), 9 * t / 10);
+    }
+    return false;
+  }
+
+  // δ = −(M⁻¹ + ∇²D)⁻¹∇Ψ.
+  vec newton_step(const point_data& x, const vec& g) const {
     matrix3<Real> h = hessian_of_d(x);
     for (std::size_t i = 0; i < 3; ++i)
       for (std::size_t j = 0; j < 3; ++j) h[i][j] += inverse_[i][j];
@@ -288,30 +350,21 @@ class metric_projector {
     return step;
   }
 
-  // The first of s + tδ, t = 1, 1/2, ..., that lowers Ψ by 10⁻⁴ of the
-  // promise t∇Ψ·δ, give or take Ψ's rounding; t = 0 and s itself once the
-  // step is below rounding.
-  point_data line_search(const point_data& x, const vec& step, Real promise, Real& t) const {
-    const Real floor = 4 * std::numeric_limits<Real>::epsilon();
-    for (t = 1; t * largest(step) > floor * largest(x.s); t /= 2) {
-      point_data y = point(shifted(x.s, step, t));
-      const Real slack = floor * (x.psi_scale + y.psi_scale);
-      if (y.psi <= x.psi + Real(1e-4) * t * promise + slack) return y;
-    }
-    t = 0;
-    return x;
-  }
-
-  // √(x² + y²), by hypot only where the squares could over- or underflow.
+  // √(x² + y²), by hypot only where the squares could over- or underflow
+  // (outside the square roots of the normal numbers, with a margin).
   static Real length(Real x, Real y) {
+    using std::fabs;
     using std::hypot;
     using std::sqrt;
-    const Real big = (std::max)(std::fabs(x), std::fabs(y));
-    return big > Real(1e-140) && big < Real(1e140) ? Real(sqrt(x * x + y * y)) : Real(hypot(x, y));
+    static const Real low = 16 * sqrt(boost::math::tools::min_value<Real>());
+    static const Real high = sqrt(boost::math::tools::max_value<Real>()) / 16;
+    const Real big = (std::max)(fabs(x), fabs(y));
+    return big > low && big < high ? Real(sqrt(x * x + y * y)) : Real(hypot(x, y));
   }
 
   static Real largest(const vec& v) {
-    return (std::max)({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])});
+    using std::fabs;
+    return (std::max)({Real(fabs(v[0])), Real(fabs(v[1])), Real(fabs(v[2]))});
   }
 
   static vec shifted(const vec& s, const vec& step, Real t) {
