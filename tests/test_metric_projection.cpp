@@ -105,7 +105,9 @@ std::array<double, 3> outward_normal(const wrench_projection<double>& r) {
 
 // The optimality conditions: the point is on the curve at its ratio (to a
 // few ulp), and M(z − p) is along the outward normal (to 1e-12 of its
-// length).  For a convex set these prove the nearest point.
+// length, plus what the rounding of p alone moves it by, 4 ulp of |p| times
+// ‖M‖: where z lies within 1e-4 of the curve, p's last bit is already
+// 1e-12 of z − p).  For a convex set these prove the nearest point.
 template <class P>
 void expect_optimal(const P& p, const matrix& m, const tangent_wrench<double>& z,
                     const wrench_projection<double>& r) {
@@ -125,7 +127,12 @@ void expect_optimal(const P& p, const matrix& m, const tangent_wrench<double>& z
   const double across[3] = {s[0] - along * n[0], s[1] - along * n[1], s[2] - along * n[2]};
   const double off =
       std::sqrt(across[0] * across[0] + across[1] * across[1] + across[2] * across[2]);
-  EXPECT_LE(off, 1e-12 * slen) << "normality, ratio " << r.ratio;
+  double norm_m = 0;
+  for (const auto& row : m)
+    for (double x : row) norm_m += x * x;
+  const double representable = 4 * 2.2204460492503131e-16 * std::sqrt(norm_m) *
+                               (1 + std::hypot(r.point.force_x, r.point.force_y, r.point.torque));
+  EXPECT_LE(off, 1e-12 * slen + representable) << "normality, ratio " << r.ratio;
 }
 
 template <class P>
@@ -209,6 +216,16 @@ TEST(MetricProjection, AStartingRatioGivesTheSameProjection) {
     if (r.sticking) continue;
     for (double start : {1e-3, 0.5, 3.0, 1e4}) {
       const auto s = project_to_limit_set(h, c.z, metric, starting_ratio<double>{start});
+      EXPECT_NEAR(s.point.force_x, r.point.force_x, 1e-14);
+      EXPECT_NEAR(s.point.force_y, r.point.force_y, 1e-14);
+      EXPECT_NEAR(s.point.torque, r.point.torque, 1e-14);
+    }
+    // From the curve point the answer left (its values save an evaluation),
+    // and from a wrong point (only a worse start): the same answer.
+    const curve_point<double> wrong{0.5, 0.9, 0.1, 1.0, 0.0};
+    for (const curve_point<double>& from : {r.curve(), wrong}) {
+      const auto s = project_to_limit_set(h, c.z, metric, from);
+      EXPECT_FALSE(s.sticking);
       EXPECT_NEAR(s.point.force_x, r.point.force_x, 1e-14);
       EXPECT_NEAR(s.point.force_y, r.point.force_y, 1e-14);
       EXPECT_NEAR(s.point.torque, r.point.torque, 1e-14);

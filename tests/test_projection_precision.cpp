@@ -134,8 +134,9 @@ void expect_nearest(const Profile& profile, const planar_metric<typename Profile
   big off = 0;
   for (std::size_t i = 0; i < 3; ++i) off += (s[i] - along * n[i]) * (s[i] - along * n[i]);
   off = sqrt(off);
-  const big size = 1 + sqrt(to_big(z.force_x) * to_big(z.force_x) +
-                            to_big(z.force_y) * to_big(z.force_y) + to_big(z.torque) * to_big(z.torque));
+  const big size =
+      1 + sqrt(to_big(z.force_x) * to_big(z.force_x) + to_big(z.force_y) * to_big(z.force_y) +
+               to_big(z.torque) * to_big(z.torque));
   const big allowed = 16 * to_big(m.condition_bound()) * to_big(eps) * norm_m * size;
   EXPECT_LE(static_cast<double>(off / allowed), 1.0) << where << ": off the normal by " << off;
   EXPECT_GE(static_cast<double>(along), -static_cast<double>(allowed)) << where << ": inwards";
@@ -173,13 +174,12 @@ void project_random_cases(const Profile& profile, const std::string& profile_nam
 // converge" before the line search went by the slope's sign), in the type.
 template <class Real>
 void project_the_fuzzers_metric() {
-  const matrix_of<Real> m{
-      {{Real(3.6685618490186893434e-05L), Real(6.05685714625876865029e-05L),
-        Real(5.97917196785922641492e-05L)},
-       {Real(6.05685714625876865029e-05L), Real(0.000100134811990465087336L),
-        Real(9.50470879699144067555e-05L)},
-       {Real(5.97917196785922641492e-05L), Real(9.50470879699144067555e-05L),
-        Real(0.000297451352951397230123L)}}};
+  const matrix_of<Real> m{{{Real(3.6685618490186893434e-05L), Real(6.05685714625876865029e-05L),
+                            Real(5.97917196785922641492e-05L)},
+                           {Real(6.05685714625876865029e-05L), Real(0.000100134811990465087336L),
+                            Real(9.50470879699144067555e-05L)},
+                           {Real(5.97917196785922641492e-05L), Real(9.50470879699144067555e-05L),
+                            Real(0.000297451352951397230123L)}}};
   if (std::is_same<Real, float>::value) {
     // Conditioned 2e4, beyond float's 1/√ε = 4.1e3: refused at set-up.
     EXPECT_THROW(planar_metric<Real>{m}, std::domain_error);
@@ -229,8 +229,7 @@ TEST(ProjectionPrecision, TheTypesAgree) {
     const tangent_wrench<double> z{u(rng), u(rng), u(rng)};
     const auto rd = project_to_limit_set(hertz<double>(), z, planar_metric<double>(md));
     const auto rf = project_to_limit_set(
-        hertz<float>(),
-        tangent_wrench<float>{float(z.force_x), float(z.force_y), float(z.torque)},
+        hertz<float>(), tangent_wrench<float>{float(z.force_x), float(z.force_y), float(z.torque)},
         planar_metric<float>(mf));
     const auto rl = project_to_limit_set(
         hertz<long double>(), tangent_wrench<long double>{z.force_x, z.force_y, z.torque},

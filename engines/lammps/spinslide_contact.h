@@ -43,9 +43,10 @@
 
 #include "error.h"
 
-#include <spinslide/limit_set.hpp>
 #include <spinslide/profile.hpp>
+#include <spinslide/trial_cap.hpp>
 
+#include <array>
 #include <cmath>
 #include <exception>
 
@@ -104,10 +105,6 @@ namespace detail {
 // normal component matters against the friction limit (relative threshold).
 constexpr double kFrameTolerance = 1e-10;
 
-// The springs' energy metric in the limit set's units (F/(mu N), M/(mu N a))
-// weighs the torque by a^2 k_t / k_w, which Marshall's k_w = k_t a^2/2 makes 2.
-constexpr double kTorqueWeight = 2.0;
-
 inline const spinslide::hertz<double>& hertz_patch() {
   static const spinslide::hertz<double> patch{};
   return patch;
@@ -160,63 +157,65 @@ inline void store_curve_point(const spinslide::curve_point<double>& p, double* h
 }
 
 // The coupled cap on spinslide's Hertz limit set, at the load `load` = mu N
-// with patch radius a.  Throws what project_to_limit_set throws.
+// with patch radius a: spinslide::cap_trial_state (trial_cap.hpp) on the
+// springs h (already rotated and stretched) and the damping, which keeps
+// the trial if it sticks and otherwise caps it in the springs' energy
+// metric and rewrites the springs to hold the cap with the damping; the
+// history's curve point starts the search and is updated by a slip.  The
+// friction fs and twisting torque mt out; true if capped.  It raises no
+// error for numerical reasons; a non-finite input (lost atoms) is a domain
+// error.
 inline bool friction_coupled(double* h, const double* vtr, double twist_rate, double kt,
                              double damp_t, double k_tw, double damp_tw, double load, double a,
                              double* fs, double& mt) {
-  // the trial: springs + damping
-  fs[0] = -kt * h[0] - damp_t * vtr[0];
-  fs[1] = -kt * h[1] - damp_t * vtr[1];
-  fs[2] = -kt * h[2] - damp_t * vtr[2];
-  mt = -k_tw * h[kHistTwist] - damp_tw * twist_rate;
-  const double fmag = std::sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
-  const double tmag = std::fabs(mt);
-  if (fmag == 0.0 && tmag == 0.0) return false;
-
-  // The trial in the limit set's units, f = |F|/(mu N), t = |M|/(mu N a).
-  // The metric diag(1/k_t, 1/k_t, 1/k_w) is isotropic in the tangent plane,
-  // so the nearest point keeps the force's direction and the torque's sign:
-  // the 3-D projection reduces to the one on the magnitudes (f, t) with
-  // torque weight a^2 k_t/k_w = 2 (docs/contact.md; spring_friction.hpp).
-  double fscale = 0.0, mcap = 0.0;
-  bool capped;
-  if (load > 0.0) {
-    const double f = fmag / load, t = tmag / (load * a);
-    if (!std::isfinite(f) || !std::isfinite(t)) {
-      capped = true;  // a vanishing load against a finite trial: no friction
-    } else {
-      // The search's first step from the last slip's curve point, without
-      // evaluating the profile (zeros, a new contact: no start).
-      const double* c = h + kHistRatio;
-      const spinslide::limit_projection<double> p = spinslide::project_to_limit_set(
-          hertz_patch(), f, t, kTorqueWeight,
-          spinslide::curve_point<double>{c[0], c[1], c[2], c[3], c[4]});
-      if (p.sticking) return false;
-      capped = true;
-      fscale = fmag > 0.0 ? p.force * load / fmag : 0.0;
-      mcap = std::copysign(p.torque * load * a, mt);
-      if (!std::isnan(p.ratio)) store_curve_point(p.curve(), h);
-    }
-  } else {
-    capped = true;  // no load, no friction
+  // No trial friction (a new contact, an exact touch with a = 0): nothing
+  // to cap, nothing to rewrite.
+  const double trial_force[3] = {-kt * h[0] - damp_t * vtr[0], -kt * h[1] - damp_t * vtr[1],
+                                 -kt * h[2] - damp_t * vtr[2]};
+  const double trial_torque = -k_tw * h[kHistTwist] - damp_tw * twist_rate;
+  if (trial_force[0] == 0.0 && trial_force[1] == 0.0 && trial_force[2] == 0.0 &&
+      trial_torque == 0.0) {
+    fs[0] = fs[1] = fs[2] = mt = 0.0;
+    return false;
   }
-
-  // slip: the capped friction, and the springs that give it with the damping
-  fs[0] *= fscale;
-  fs[1] *= fscale;
-  fs[2] *= fscale;
-  mt = mcap;
-  for (int k = 0; k < 3; ++k) h[k] = -(fs[k] + damp_t * vtr[k]) / kt;
-  h[kHistTwist] = -(mt + damp_tw * twist_rate) / k_tw;
-  return capped;
+  if (!(load > 0.0) || !(a > 0.0) || !(kt > 0.0) || !(k_tw > 0.0)) {
+    // no load, no friction: the springs hold only the damping
+    fs[0] = fs[1] = fs[2] = mt = 0.0;
+    if (kt > 0.0)
+      for (int k = 0; k < 3; ++k) h[k] = -(damp_t * vtr[k]) / kt;
+    if (k_tw > 0.0) h[kHistTwist] = -(damp_tw * twist_rate) / k_tw;
+    return true;
+  }
+  using vec = std::array<double, 3>;
+  const spinslide::spring_trial<vec, double> trial{
+      vec{h[0], h[1], h[2]}, h[kHistTwist],
+      vec{-damp_t * vtr[0], -damp_t * vtr[1], -damp_t * vtr[2]}, -damp_tw * twist_rate};
+  const spinslide::spring_stiffness<double> springs{spinslide::tangential_stiffness<double>{kt},
+                                                    spinslide::twisting_stiffness<double>{k_tw}};
+  const spinslide::force_contact<double> contact{spinslide::patch_radius<double>{a},
+                                                 spinslide::normal_force<double>{load},
+                                                 spinslide::friction_coefficient<double>{1.0}};
+  const double* c = h + kHistRatio;
+  const auto r =
+      spinslide::cap_trial_state(hertz_patch(), trial, springs, contact,
+                                 spinslide::curve_point<double>{c[0], c[1], c[2], c[3], c[4]});
+  for (int k = 0; k < 3; ++k) {
+    fs[k] = r.force[k];
+    h[k] = r.displacement[k];
+  }
+  mt = r.torque;
+  h[kHistTwist] = r.twist;
+  if (!r.sticking) store_curve_point(r.curve(), h);
+  return !r.sticking;
 }
 
 }  // namespace detail
 
 /// One contact's forces from its state and history (kHistSize values),
 /// advancing the springs by dt if `advance` (not during LAMMPS' setup), the
-/// friction capped together (`coupled`) or independently.  A failed
-/// projection is reported through `error->one` with `style` in the message.
+/// friction capped together (`coupled`) or independently.  A non-finite
+/// input to the cap is reported through `error->one` with `style` in the
+/// message.
 inline void contact_force(const ContactLaw& law, const ContactState& s, double* history, double dt,
                           bool advance, bool coupled, LAMMPS_NS::Error* error, const char* style,
                           ContactForce& out) {
@@ -280,7 +279,9 @@ inline void contact_force(const ContactLaw& law, const ContactState& s, double* 
       out.capped = detail::friction_coupled(history, vtr, twist_rate, kt, damp_t, k_tw, damp_tw,
                                             fscrit, a, out.fs, out.mt);
     } catch (std::exception& e) {
-      error->one(FLERR, "{}: the projection failed: {}", style, e.what());
+      // Only a non-finite input reaches here (the cap raises nothing for
+      // numerical reasons): lost atoms or a broken overlap.
+      error->one(FLERR, "{}: a contact's friction input is not finite: {}", style, e.what());
     }
   } else {
     const double mtcrit = (2.0 / 3.0) * a * law.mu * load_n;

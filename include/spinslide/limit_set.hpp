@@ -24,6 +24,7 @@
 #include <spinslide/detail/metric_projector.hpp>
 #include <spinslide/planar_metric.hpp>
 #include <spinslide/profile_concept.hpp>
+#include <spinslide/projection_results.hpp>
 
 #include <limits>
 #include <type_traits>
@@ -94,7 +95,8 @@ template <class Profile, class Real>
 wrench_projection<Real> project_wrench_checked(const Profile& profile,
                                                const tangent_wrench<Real>& point,
                                                const planar_metric<Real>& metric, Real start,
-                                               const char* function) {
+                                               const char* function,
+                                               const curve_point<Real>* from = nullptr) {
   require_smooth_curve<Profile, Real>();
   using Policy = typename Profile::policy_type;
   const Policy pol;
@@ -107,7 +109,7 @@ wrench_projection<Real> project_wrench_checked(const Profile& profile,
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     return {{nan, nan, nan}, false, nan};
   }
-  return metric_projector<Profile>(profile, z, metric.entries(), metric.inverse())(s);
+  return metric_projector<Profile>(profile, z, metric.entries(), metric.inverse())(s, from);
 }
 
 }  // namespace detail
@@ -187,6 +189,21 @@ wrench_projection<Real> project_to_limit_set(const Profile& profile,
       profile, point, metric, start.value,
       "spinslide::project_to_limit_set<%1%>(profile, tangent_wrench, planar_metric, "
       "starting_ratio)");
+}
+
+/// As above, searching from where the contact's last projection left the
+/// curve (its result's curve(), from a slip: ratio ≥ 0, else a domain
+/// error): one evaluation of the profile fewer than from its ratio alone.
+/// The result does not depend on the point (to rounding): only the start.
+template <class Profile, class Real>
+wrench_projection<Real> project_to_limit_set(const Profile& profile,
+                                             const tangent_wrench<Real>& point,
+                                             const planar_metric<Real>& metric,
+                                             const curve_point<Real>& start) {
+  return detail::project_wrench_checked(
+      profile, point, metric, start.ratio,
+      "spinslide::project_to_limit_set<%1%>(profile, tangent_wrench, planar_metric, curve_point)",
+      &start);
 }
 
 }  // namespace spinslide

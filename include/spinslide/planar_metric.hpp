@@ -37,6 +37,8 @@ struct tangent_wrench {
 template <class Real>
 class planar_metric {
  public:
+  /// The floating type of the entries.
+  using value_type = Real;
   /// The 3×3 matrix type: std::array of three rows.
   using matrix = detail::matrix3<Real>;
 

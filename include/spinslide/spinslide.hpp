@@ -23,9 +23,11 @@
 #include <spinslide/profile.hpp>
 #include <spinslide/profile_base.hpp>
 #include <spinslide/profile_concept.hpp>
+#include <spinslide/projection_results.hpp>
 #include <spinslide/spring_friction.hpp>
 #include <spinslide/tabulated.hpp>
 #include <spinslide/tabulated_throw.hpp>
 #include <spinslide/terminal.hpp>
+#include <spinslide/trial_cap.hpp>
 
 #endif  // SPINSLIDE_SPINSLIDE_HPP

@@ -25,6 +25,7 @@
 #include <spinslide/detail/product.hpp>
 #include <spinslide/detail/vector_access.hpp>
 #include <spinslide/limit_set.hpp>
+#include <spinslide/trial_cap.hpp>
 
 #include <cmath>
 #include <limits>
@@ -109,7 +110,6 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
   const Real kw = checked(function, "springs.twisting", springs.twisting.value,
                           argument_rule::finite_positive, pol);
   const auto patch = detail::checked_patch(function, contact, pol);
-  const Real a = patch.radius, n = patch.normal, mu = patch.friction;
   const Real start =
       checked(function, "history.ratio", history.ratio, argument_rule::non_negative, pol);
   spring_friction<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN()};
@@ -121,55 +121,25 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
     out.torque = out.ratio = bad;
     return out;
   };
-  if (detail::any_reported(x, y, phi, kt, kw, a, n, mu, start)) return reported(out.ratio);
-  // The trial state, and its magnitudes in the limit set's units.
-  // The springs' trial force and torque, which must not overflow.
-  const Real fx =
-      checked(function, "the trial force -k_t xi[0]", Real(-kt * x), argument_rule::finite, pol);
-  const Real fy =
-      checked(function, "the trial force -k_t xi[1]", Real(-kt * y), argument_rule::finite, pol);
-  const Real t =
-      checked(function, "the trial torque -k_w phi", Real(-kw * phi), argument_rule::finite, pol);
-  const Real f = checked(function, "the trial force's magnitude", Real(std::hypot(fx, fy)),
-                         argument_rule::finite, pol);
-  if (detail::any_reported(fx, fy, t, f)) return reported(f + fx + fy + t);
-  const Real load = mu * n;
-  limit_projection<Real> cap{0, 0, f == 0 && t == 0, std::numeric_limits<Real>::quiet_NaN()};
-  curve_point<Real> kept = history.curve;  // the next step's, if this one slips
-  if (load > 0) {
-    // From the kept curve point if it is at the ratio, else from the ratio
-    // alone.
-    const limit_projection<Real> p = detail::project_checked(
-        profile, Real(f / load), Real(std::fabs(t) / a / load), Real(a * a * kt / kw), start,
-        function, history.curve.ratio == start ? &history.curve : nullptr);
-    cap = {p.force, p.torque, p.sticking, p.ratio};
-    if (!p.sticking && !(boost::math::isnan)(p.ratio)) kept = p.curve();
+  if (detail::any_reported(x, y, phi, kt, kw, patch.radius, patch.normal, patch.friction, start))
+    return reported(out.ratio);
+  // From the kept curve point if it is at the ratio, else from the ratio
+  // alone.
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  const curve_point<Real> from =
+      history.curve.ratio == start ? history.curve : curve_point<Real>{start, nan, nan, nan, nan};
+  const capped_friction<Vec2, Real> cap = detail::cap_checked<2, Vec2>(
+      profile, detail::checked_trial<Real>{{x, y, Real(0)}, {}, phi, Real(0)},
+      spring_stiffness<Real>{tangential_stiffness<Real>{kt}, twisting_stiffness<Real>{kw}}, patch,
+      from, function);
+  if ((boost::math::isnan)(cap.twist)) return reported(cap.twist);
+  out = {cap.force, cap.torque, cap.sticking, cap.ratio};
+  history.displacement = cap.displacement;
+  history.twist = cap.twist;
+  if (!cap.sticking && !(boost::math::isnan)(cap.ratio)) {
+    history.ratio = cap.ratio;
+    history.curve = cap.point;
   }
-  out.sticking = cap.sticking;
-  out.ratio = cap.ratio;
-  // Sticking keeps the trial state; slipping keeps the force's direction and
-  // the torque's sign (the metric is isotropic in the plane) and rewrites
-  // the springs.
-  const Real scale = out.sticking ? Real(1) : f > 0 ? Real(cap.force * load / f) : Real(0);
-  const Real torque = out.sticking ? t : std::copysign(detail::product(load, a, cap.torque), t);
-  // The springs that hold the result (finite: a spring too soft for the
-  // capped force, F/k beyond the largest value, is a domain error and the
-  // history is left as it was).
-  const Real sx = checked(function, "the rewritten spring F_x/k_t",
-                          out.sticking ? x : Real(-fx * scale / kt), argument_rule::finite, pol);
-  const Real sy = checked(function, "the rewritten spring F_y/k_t",
-                          out.sticking ? y : Real(-fy * scale / kt), argument_rule::finite, pol);
-  const Real sphi = checked(function, "the rewritten spring T/k_w",
-                            out.sticking ? phi : Real(-torque / kw), argument_rule::finite, pol);
-  if (detail::any_reported(sx, sy, sphi)) return reported(sx + sy + sphi);
-  detail::set<0>(out.force, fx * scale);
-  detail::set<1>(out.force, fy * scale);
-  out.torque = torque;
-  detail::set<0>(history.displacement, sx);
-  detail::set<1>(history.displacement, sy);
-  history.twist = sphi;
-  if (!out.sticking && !(boost::math::isnan)(cap.ratio)) history.ratio = cap.ratio;
-  history.curve = kept;
   return out;
 }
 

@@ -56,8 +56,8 @@ int main() {
   return spinslide::project_to_limit_set(table, 0.5, 0.5, 1.0).sticking ? 0 : 1;
 #elif MISUSE == 7
   // ... nor the approximants shrunk.
-  const spinslide::scaled<spinslide::pade_approximation<>> shrunk(
-      spinslide::pade_approximation<>{}, 0.5);
+  const spinslide::scaled<spinslide::pade_approximation<>> shrunk(spinslide::pade_approximation<>{},
+                                                                  0.5);
   return spinslide::project_to_limit_set(shrunk, 0.5, 0.5, 1.0).sticking ? 0 : 1;
 #elif MISUSE == 8
   // ... nor a sum with them as one part.
@@ -66,8 +66,8 @@ int main() {
   return spinslide::project_to_limit_set(sum, 0.5, 0.5, 1.0).sticking ? 0 : 1;
 #elif MISUSE == 9
   // ... nor the 3-D projection of the approximants shrunk.
-  const spinslide::scaled<spinslide::pade_approximation<>> shrunk(
-      spinslide::pade_approximation<>{}, 0.5);
+  const spinslide::scaled<spinslide::pade_approximation<>> shrunk(spinslide::pade_approximation<>{},
+                                                                  0.5);
   const spinslide::planar_metric<double> identity({{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
   return spinslide::project_to_limit_set(shrunk, spinslide::tangent_wrench<double>{1, 1, 1},
                                          identity)

@@ -33,6 +33,7 @@
 #include <spinslide/detail/force_slope.hpp>
 #include <spinslide/detail/product.hpp>
 #include <spinslide/disk.hpp>
+#include <spinslide/projection_results.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/precision.hpp>
@@ -42,37 +43,6 @@
 #include <limits>
 
 namespace spinslide {
-
-/// A point of a profile's limit curve as a projection left it
-/// (limit_projection::curve()): the ratio ε and 𝓕, 𝓣, 𝓕′ and 𝓕″ there.
-/// Passed to the next projection of the same contact with the same profile
-/// (project_to_limit_set, limit_set.hpp), it lets that search take its first
-/// step without evaluating the profile.
-template <class Real>
-struct curve_point {
-  Real ratio;      ///< ε
-  Real force;      ///< 𝓕(ε)
-  Real torque;     ///< 𝓣(ε)
-  Real slope;      ///< 𝓕′(ε) (NaN: unknown, and the point serves as a ratio only)
-  Real curvature;  ///< 𝓕″(ε) (NaN: unknown, and the first step is Newton's)
-};
-
-/// The point of a profile's limit set nearest to a given (force, torque)
-/// (project_to_limit_set, limit_set.hpp).
-template <class Real>
-struct limit_projection {
-  Real force;     ///< f = |F|/(μN) of the nearest point of L
-  Real torque;    ///< t = |T|/(μNa) of the nearest point of L
-  bool sticking;  ///< true if the given point lies in L (then returned unchanged)
-  Real ratio;  ///< the ratio ε of the curve point (NaN if sticking; +∞ at (1, 0), 0 at (0, ⟨r⟩))
-  /// 𝓕′ at `ratio`, where the profile has it in closed form and the point is
-  /// on the curve between the ends (else NaN).
-  Real slope = std::numeric_limits<Real>::quiet_NaN();
-  /// 𝓕″ at `ratio`, where the projection's last step was Halley's (else NaN).
-  Real curvature = std::numeric_limits<Real>::quiet_NaN();
-  /// Where this projection left the curve, to start the contact's next one from.
-  curve_point<Real> curve() const { return {ratio, force, torque, slope, curvature}; }
-};
 
 namespace detail {
 
@@ -91,6 +61,13 @@ class limit_projector {
     if (x_ + y_ / top_ <= 1) return sticking();  // inside the triangle (0,0), (1,0), (0,⟨r⟩)
     if (y_ == 0) return on_curve(inf(), {Real(1), Real(0)});  // x > 1: the corner (1, 0)
     if (x_ == 0) return on_curve(Real(0), {Real(0), top_});  // y > ⟨r⟩: the corner (0, ⟨r⟩)
+    return project(start, from);
+  }
+
+ private:
+  // Apart from the tests above, so that a caller inlines those (a sticking
+  // contact, the common case, costs the triangle's test) and calls this.
+  limit_projection<Real> project(Real start, const curve_point<Real>* from) {
     limit_projection<Real> warm{};
     if (warm_steps(start, from, warm)) return warm;
     lo_ = {Real(0), {Real(0), top_}, x_, Real(0)};
@@ -115,7 +92,6 @@ class limit_projector {
     return on_edge();
   }
 
- private:
   static constexpr int max_iterations = 200;
   // Warm steps before the safeguarded search takes over.
   static constexpr int max_warm_iterations = 6;

@@ -28,6 +28,7 @@
 #include <spinslide/detail/limit_projector.hpp>
 #include <spinslide/detail/matrix3.hpp>
 #include <spinslide/planar_metric.hpp>
+#include <spinslide/projection_results.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/precision.hpp>
@@ -37,15 +38,6 @@
 #include <limits>
 
 namespace spinslide {
-
-/// The point of a profile's limit set nearest to a tangent wrench in a
-/// planar_metric (project_to_limit_set, limit_set.hpp).
-template <class Real>
-struct wrench_projection {
-  tangent_wrench<Real> point;  ///< the nearest point of L₃ (in the limit set's units)
-  bool sticking;               ///< true if the given wrench lies in L₃ (then returned unchanged)
-  Real ratio;                  ///< ε of the curve point (NaN if sticking)
-};
 
 namespace detail {
 
@@ -71,21 +63,28 @@ class metric_projector {
       }
   }
 
-  // The projection; `start`: a ratio to search from (0 or ∞: none).
-  wrench_projection<Real> operator()(Real start) {
+  // The projection; `start`: a ratio to search from (0 or ∞: none), or the
+  // curve point `from` (at the ratio `start`, its 𝓕 and 𝓣 finite) that the
+  // contact's last projection left, whose values save an evaluation.
+  wrench_projection<Real> operator()(Real start, const curve_point<Real>* from = nullptr) {
     using std::fabs;
     if (largest(z_) > far()) return support_point();
     // With a start: if z lies beyond the support plane of L₃ with the normal
     // n at the start's curve point (zᵀn > D(n) = max over L₃ of pᵀn), z is
-    // outside and n a descent direction: Newton from there, one evaluation.
+    // outside and n a descent direction: Newton from there, one evaluation
+    // (none from a curve point).  Only the start depends on the point: every
+    // result rests on the profile's own values.
     if (start > 0 && start < std::numeric_limits<Real>::infinity()) {
-      const ray r = normal_ray(start, p_.force_torque(start));
+      const bool known =
+          from && (boost::math::isfinite)(from->force) && (boost::math::isfinite)(from->torque);
+      const ray r = normal_ray(start, known ? force_torque_result<Real>{from->force, from->torque}
+                                            : p_.force_torque(start));
       if (r.resolved) return descend(r);
     }
     // Otherwise the 2-D projection decides sticking on the magnitudes and
     // gives the curve point, along z's direction, to start from.
-    const limit_projection<Real> flat = limit_projector<Profile>(
-        p_, length(z_[0], z_[1]), fabs(z_[2]), torque_weight())(start);
+    const limit_projection<Real> flat =
+        limit_projector<Profile>(p_, length(z_[0], z_[1]), fabs(z_[2]), torque_weight())(start);
     if (flat.sticking) return {{z_[0], z_[1], z_[2]}, true, std::numeric_limits<Real>::quiet_NaN()};
     const ray r = normal_ray(flat.ratio, {flat.force, flat.torque});
     if (r.resolved) return descend(r);
@@ -174,6 +173,7 @@ class metric_projector {
     Real psi = 0;
     Real psi_scale = 0;  // the sum of |Ψ|'s terms: its rounding is a few ulp of it
     vec ms{};            // M⁻¹s
+    Real slope = 0;  // 𝓕′(ε), where the profile gives it with the values (fused_value_slope)
   };
 
   // The torque's weight relative to the force's for the 2-D start and test
@@ -192,7 +192,19 @@ class metric_projector {
     d.across = fabs(s[2]);
     d.eps = d.across > 0 ? Real(d.along / d.across) : std::numeric_limits<Real>::infinity();
     if (d.along == 0) d.eps = 0;
-    d.ft = p_.force_torque(d.eps);
+    if constexpr (fused_value_slope<Profile>::value) {
+      // 𝓕′ with the values, from the same call (Hertz, Boussinesq): the
+      // Hessian needs it at every iterate.
+      if (d.eps > 0 && d.eps < std::numeric_limits<Real>::infinity()) {
+        const auto both = fused_value_slope<Profile>::template at<false>(p_, d.eps);
+        d.ft = both.value;
+        d.slope = both.slope;
+      } else {
+        d.ft = p_.force_torque(d.eps);
+      }
+    } else {
+      d.ft = p_.force_torque(d.eps);
+    }
     const Real unit = d.along > 0 ? Real(d.ft.force / d.along) : Real(0);
     d.grad_d = {s[0] * unit, s[1] * unit,
                 s[2] > 0   ? d.ft.torque
@@ -207,26 +219,41 @@ class metric_projector {
     return d;
   }
 
-  // 𝓕′(ε), closed form where the profile has one, else a forward difference
-  // (in 𝓣 through 𝓣′ = −ε𝓕′ where 𝓕 > 1/2): Newton needs only an
-  // approximate Hessian, the gradient is exact.
-  Real slope(const point_data& d) const {
-    if constexpr (has_force_slope<Profile>()) {
+  // 𝓕′(ε), closed form where the profile has one, else the secant through
+  // the previous iterate where it is within 10 % in ε (as Newton's steps
+  // are near the answer), else a forward difference (one more evaluation);
+  // each in 𝓣 through 𝓣′ = −ε𝓕′ where 𝓕 > 1/2, where 𝓕's differences round
+  // away.  Newton needs only an approximate Hessian: the gradient is exact.
+  Real slope(const point_data& d, const point_data* previous) const {
+    if constexpr (fused_value_slope<Profile>::value) {
+      return d.slope;
+    } else if constexpr (has_force_slope<Profile>()) {
       return force_slope(p_, d.eps);
     } else {
+      using std::fabs;
+      if (previous && previous->eps > 0 && previous->eps < std::numeric_limits<Real>::infinity()) {
+        const Real gap = fabs(d.eps - previous->eps);
+        const Real secant = difference_slope(d, previous->eps, previous->ft);
+        if (gap > 0 && gap <= d.eps / 10 && secant > 0 && (boost::math::isfinite)(secant))
+          return secant;
+      }
       using std::sqrt;
       static const Real relative = sqrt(epsilon());
-      const Real step = d.eps * relative;
-      const auto next = p_.force_torque(d.eps + step);
-      return d.ft.force <= Real(0.5) ? Real((next.force - d.ft.force) / step)
-                                     : Real((d.ft.torque - next.torque) / (step * d.eps));
+      const Real next = d.eps * (1 + relative);
+      return difference_slope(d, next, p_.force_torque(next));
     }
+  }
+  // The slope of the chord from d to the curve point (e, c).
+  static Real difference_slope(const point_data& d, Real e, const force_torque_result<Real>& c) {
+    return d.ft.force <= Real(0.5)
+               ? Real((c.force - d.ft.force) / (e - d.eps))
+               : Real((d.ft.torque - c.torque) / ((e - d.eps) * ((e + d.eps) / 2)));
   }
 
   // The Hessian of D, rank two: (𝓕′ε/|s_f|) u uᵀ + (𝓕/|s_f|)(I − ddᵀ) on the
   // force block, u = (d, −ε sign s_t); in 1/|s_t| form where ε ≤ 1 (finite
   // at ε = 0: ⟨1/r⟩/2 I), and its ε = ∞ limit (⟨r²⟩/2 for the torque).
-  matrix3<Real> hessian_of_d(const point_data& d) const {
+  matrix3<Real> hessian_of_d(const point_data& d, const point_data* previous) const {
     matrix3<Real> h{};
     const Real sign = d.s[2] < 0 ? Real(-1) : Real(1);
     const Real dx = d.along > 0 ? Real(d.s[0] / d.along) : Real(1);
@@ -240,7 +267,7 @@ class metric_projector {
       c = p_.mean_square_radius() / 2;  // ε³𝓕′ → ⟨r²⟩/2
       scale = 1 / d.along;
     } else {
-      const Real fp = slope(d);
+      const Real fp = slope(d, previous);
       const bool small = d.eps <= 1;
       // 1/|s_t| form: 𝓕′ ddᵀ + (𝓕/ε)(I − ddᵀ), −𝓕′ε σd, 𝓕′ε²; 1/|s_f| form: times ε.
       a = small ? fp : fp * d.eps;
@@ -274,13 +301,15 @@ class metric_projector {
   // iterate is the answer.
   wrench_projection<Real> newton(point_data x) const {
     const Real tiny = 4 * epsilon();
+    point_data previous{};
     for (int iteration = 0; iteration < max_newton_iterations; ++iteration) {
       const vec g = gradient(x);
-      const vec step = newton_step(x, g);
+      const vec step = newton_step(x, g, iteration > 0 ? &previous : nullptr);
       const directional start = along(x, g, step);
       if (!(start.slope < -start.rounding) || largest(step) <= tiny * largest(x.s))
         return result(x);
-      if (!line_search(x, step, start, x)) return result(x);
+      previous = x;
+      if (!line_search(previous, step, start, x)) return result(x);
     }
     return result(x);
   }
@@ -340,8 +369,8 @@ class metric_projector {
   }
 
   // δ = −(M⁻¹ + ∇²D)⁻¹∇Ψ.
-  vec newton_step(const point_data& x, const vec& g) const {
-    matrix3<Real> h = hessian_of_d(x);
+  vec newton_step(const point_data& x, const vec& g, const point_data* previous) const {
+    matrix3<Real> h = hessian_of_d(x, previous);
     for (std::size_t i = 0; i < 3; ++i)
       for (std::size_t j = 0; j < 3; ++j) h[i][j] += inverse_[i][j];
     vec step{};

@@ -7,6 +7,8 @@
 #ifndef SPINSLIDE_DETAIL_VECTOR_ACCESS_HPP
 #define SPINSLIDE_DETAIL_VECTOR_ACCESS_HPP
 
+#include <array>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -67,6 +69,46 @@ template <int I, class V, class Real>
 void set(V& v, Real value) {
   using C = std::remove_reference_t<decltype(component<I>(v))>;
   component<I>(v) = static_cast<C>(value);
+}
+
+template <class V, class = void>
+struct has_tuple_size : std::false_type {};
+template <class V>
+struct has_tuple_size<V, std::void_t<decltype(std::tuple_size<V>::value)>> : std::true_type {};
+
+// How many components a vector type holds, where its type says: its
+// std::tuple_size (std::array), 3 with a member z, else 2 (a class with
+// operator[] and no std::tuple_size, read as a tangent-plane 2-vector).
+template <class V>
+constexpr int components() {
+  if constexpr (has_tuple_size<V>::value) {
+    return static_cast<int>(std::tuple_size<V>::value);
+  } else if constexpr (has_member_z<V>::value) {
+    return 3;
+  } else {
+    return 2;
+  }
+}
+
+// The first N (2 or 3) components of v as a 3-vector of Real (z = 0 for N = 2).
+template <int N, class Real, class V>
+std::array<Real, 3> read(const V& v) {
+  static_assert(N == 2 || N == 3, "read: 2 or 3 components");
+  if constexpr (N == 3) {
+    return {static_cast<Real>(get<0>(v)), static_cast<Real>(get<1>(v)),
+            static_cast<Real>(get<2>(v))};
+  } else {
+    return {static_cast<Real>(get<0>(v)), static_cast<Real>(get<1>(v)), Real(0)};
+  }
+}
+
+// The first N (2 or 3) components of x into v.
+template <int N, class V, class Real>
+void write(V& v, const std::array<Real, 3>& x) {
+  static_assert(N == 2 || N == 3, "write: 2 or 3 components");
+  set<0>(v, x[0]);
+  set<1>(v, x[1]);
+  if constexpr (N == 3) set<2>(v, x[2]);
 }
 
 }  // namespace detail
