@@ -92,6 +92,13 @@ std::vector<case_data> random_cases(int n, unsigned seed) {
   return out;
 }
 
+double frobenius(const matrix& m) {
+  double s = 0;
+  for (const auto& row : m)
+    for (double x : row) s += x * x;
+  return std::sqrt(s);
+}
+
 // The outward normal of L₃ at the projection's point, (ε f̂, σ) scaled to
 // unit length; at ε = ∞ (f̂, 0).
 std::array<double, 3> outward_normal(const wrench_projection<double>& r) {
@@ -127,10 +134,7 @@ void expect_optimal(const P& p, const matrix& m, const tangent_wrench<double>& z
   const double across[3] = {s[0] - along * n[0], s[1] - along * n[1], s[2] - along * n[2]};
   const double off =
       std::sqrt(across[0] * across[0] + across[1] * across[1] + across[2] * across[2]);
-  double norm_m = 0;
-  for (const auto& row : m)
-    for (double x : row) norm_m += x * x;
-  const double representable = 4 * 2.2204460492503131e-16 * std::sqrt(norm_m) *
+  const double representable = 4 * 2.2204460492503131e-16 * frobenius(m) *
                                (1 + std::hypot(r.point.force_x, r.point.force_y, r.point.torque));
   EXPECT_LE(off, 1e-12 * slen + representable) << "normality, ratio " << r.ratio;
 }

@@ -83,53 +83,73 @@ std::string name_of() {
   return "cpp_bin_float_50";
 }
 
+// A sticking answer: z unchanged, and (|z_f|, |z_t|) not above the curve
+// (the torque the curve gives at that force).
+template <class Profile>
+void expect_sticking(const Profile& profile, const tangent_wrench<typename Profile::value_type>& z,
+                     const wrench_projection<typename Profile::value_type>& r,
+                     const std::string& where) {
+  using Real = typename Profile::value_type;
+  using std::fabs;
+  const Real eps = std::numeric_limits<Real>::epsilon();
+  EXPECT_EQ(r.point.force_x, z.force_x) << where;
+  EXPECT_EQ(r.point.torque, z.torque) << where;
+  const Real f = Real(hypot(to_big(z.force_x), to_big(z.force_y)));
+  ASSERT_LE(f, Real(1)) << where;
+  EXPECT_LE(fabs(z.torque), torque_at_force(profile, f) * (1 + 64 * eps) + 64 * eps) << where;
+}
+
+// The unit outward normal of L₃ at the answer: (ε f̂, σ)/√(ε² + 1), or
+// (f̂, 0) at ε = ∞.
+template <class Real>
+std::array<big, 3> unit_normal(const wrench_projection<Real>& r) {
+  const big fx = to_big(r.point.force_x), fy = to_big(r.point.force_y);
+  const big f = sqrt(fx * fx + fy * fy);
+  const big dx = f > 0 ? fx / f : big(1), dy = f > 0 ? fy / f : big(0);
+  if ((boost::math::isinf)(r.ratio)) return {dx, dy, big(0)};
+  const big e = to_big(r.ratio), len = sqrt(e * e + 1);
+  const big sigma = r.point.torque >= 0 ? 1 : -1;
+  return {e * dx / len, e * dy / len, sigma / len};
+}
+
+// s = M(z − p) in 50 digits, and ‖M‖_F.
+template <class Real>
+std::array<big, 3> slip_of(const planar_metric<Real>& m, const tangent_wrench<Real>& z,
+                           const wrench_projection<Real>& r, big& norm_m) {
+  const big d[3] = {to_big(z.force_x) - to_big(r.point.force_x),
+                    to_big(z.force_y) - to_big(r.point.force_y),
+                    to_big(z.torque) - to_big(r.point.torque)};
+  std::array<big, 3> s{};
+  norm_m = 0;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) {
+      const big mij = to_big(m.entries()[i][j]);
+      s[i] += mij * d[j];
+      norm_m += mij * mij;
+    }
+  norm_m = sqrt(norm_m);
+  return s;
+}
+
 // The optimality conditions of the answer r for z in the metric m, in 50
 // digits: on the curve (to 8 ulp of the type), and M(z − p) along the
 // outward normal (to the problem's rounding, see the file's comment) and
-// pointing outwards.  Sticking answers: z unchanged, and (|z_f|, |z_t|)
-// not above the curve (the torque the curve gives at that force).
+// pointing outwards.
 template <class Profile>
 void expect_nearest(const Profile& profile, const planar_metric<typename Profile::value_type>& m,
                     const tangent_wrench<typename Profile::value_type>& z,
                     const wrench_projection<typename Profile::value_type>& r,
                     const std::string& where) {
   using Real = typename Profile::value_type;
-  using std::fabs;
-  const Real eps = std::numeric_limits<Real>::epsilon();
-  if (r.sticking) {
-    EXPECT_EQ(r.point.force_x, z.force_x) << where;
-    EXPECT_EQ(r.point.torque, z.torque) << where;
-    const Real f = Real(hypot(to_big(z.force_x), to_big(z.force_y)));
-    ASSERT_LE(f, Real(1)) << where;
-    EXPECT_LE(fabs(z.torque), torque_at_force(profile, f) * (1 + 64 * eps) + 64 * eps) << where;
-    return;
-  }
-  const big fx = to_big(r.point.force_x), fy = to_big(r.point.force_y), t = to_big(r.point.torque);
-  const big f = sqrt(fx * fx + fy * fy);
+  if (r.sticking) return expect_sticking(profile, z, r, where);
+  const double eps = static_cast<double>(std::numeric_limits<Real>::epsilon());
+  const big f = hypot(to_big(r.point.force_x), to_big(r.point.force_y));
   const auto c = profile.force_torque(r.ratio);
-  EXPECT_LE(static_cast<double>(abs(f - to_big(c.force))), 8 * double(eps)) << where;
-  EXPECT_LE(static_cast<double>(abs(abs(t) - to_big(c.torque))), 8 * double(eps)) << where;
-  const big d[3] = {to_big(z.force_x) - fx, to_big(z.force_y) - fy, to_big(z.torque) - t};
-  big s[3];
-  big norm_m = 0;
-  for (std::size_t i = 0; i < 3; ++i) {
-    s[i] = 0;
-    for (std::size_t j = 0; j < 3; ++j) {
-      s[i] += to_big(m.entries()[i][j]) * d[j];
-      norm_m += to_big(m.entries()[i][j]) * to_big(m.entries()[i][j]);
-    }
-  }
-  norm_m = sqrt(norm_m);
-  // The outward normal (ε f̂, σ), or (f̂, 0) at ε = ∞, unit length.
-  big n[3];
-  const big dx = f > 0 ? fx / f : big(1), dy = f > 0 ? fy / f : big(0);
-  const big sigma = t >= 0 ? 1 : -1;
-  if ((boost::math::isinf)(r.ratio)) {
-    n[0] = dx, n[1] = dy, n[2] = 0;
-  } else {
-    const big e = to_big(r.ratio), len = sqrt(e * e + 1);
-    n[0] = e * dx / len, n[1] = e * dy / len, n[2] = sigma / len;
-  }
+  EXPECT_LE(static_cast<double>(abs(f - to_big(c.force))), 8 * eps) << where;
+  EXPECT_LE(static_cast<double>(abs(abs(to_big(r.point.torque)) - to_big(c.torque))), 8 * eps)
+      << where;
+  big norm_m;
+  const std::array<big, 3> s = slip_of(m, z, r, norm_m), n = unit_normal(r);
   const big along = s[0] * n[0] + s[1] * n[1] + s[2] * n[2];
   big off = 0;
   for (std::size_t i = 0; i < 3; ++i) off += (s[i] - along * n[i]) * (s[i] - along * n[i]);
@@ -137,7 +157,7 @@ void expect_nearest(const Profile& profile, const planar_metric<typename Profile
   const big size =
       1 + sqrt(to_big(z.force_x) * to_big(z.force_x) + to_big(z.force_y) * to_big(z.force_y) +
                to_big(z.torque) * to_big(z.torque));
-  const big allowed = 16 * to_big(m.condition_bound()) * to_big(eps) * norm_m * size;
+  const big allowed = 16 * to_big(m.condition_bound()) * big(eps) * norm_m * size;
   EXPECT_LE(static_cast<double>(off / allowed), 1.0) << where << ": off the normal by " << off;
   EXPECT_GE(static_cast<double>(along), -static_cast<double>(allowed)) << where << ": inwards";
 }
@@ -173,18 +193,24 @@ void project_random_cases(const Profile& profile, const std::string& profile_nam
 // The metric of the fuzzer's stall (fuzz_impulse; it threw "did not
 // converge" before the line search went by the slope's sign), in the type.
 template <class Real>
+matrix_of<Real> the_fuzzers_metric() {
+  return {{{Real(3.6685618490186893434e-05L), Real(6.05685714625876865029e-05L),
+            Real(5.97917196785922641492e-05L)},
+           {Real(6.05685714625876865029e-05L), Real(0.000100134811990465087336L),
+            Real(9.50470879699144067555e-05L)},
+           {Real(5.97917196785922641492e-05L), Real(9.50470879699144067555e-05L),
+            Real(0.000297451352951397230123L)}}};
+}
+
+// Conditioned 2e4, beyond float's 1/√ε = 4.1e3: refused at set-up.
+void expect_refused_in_float() {
+  EXPECT_THROW(planar_metric<float>{the_fuzzers_metric<float>()}, std::domain_error);
+}
+
+template <class Real>
 void project_the_fuzzers_metric() {
-  const matrix_of<Real> m{{{Real(3.6685618490186893434e-05L), Real(6.05685714625876865029e-05L),
-                            Real(5.97917196785922641492e-05L)},
-                           {Real(6.05685714625876865029e-05L), Real(0.000100134811990465087336L),
-                            Real(9.50470879699144067555e-05L)},
-                           {Real(5.97917196785922641492e-05L), Real(9.50470879699144067555e-05L),
-                            Real(0.000297451352951397230123L)}}};
-  if (std::is_same<Real, float>::value) {
-    // Conditioned 2e4, beyond float's 1/√ε = 4.1e3: refused at set-up.
-    EXPECT_THROW(planar_metric<Real>{m}, std::domain_error);
-    return;
-  }
+  const matrix_of<Real> m = the_fuzzers_metric<Real>();
+  if (std::is_same<Real, float>::value) return expect_refused_in_float();
   const planar_metric<Real> metric(m);
   const tangent_wrench<Real> z{Real(1), Real(0.97463330898909816824L),
                                Real(0.636651730873736165783L)};

@@ -77,7 +77,7 @@ Real invert_monotonic(G g, Real target, bool increasing, bool jumps_at_zero, con
   // Sign of f moves from "below" to "above" as ε grows when increasing.
   auto below = [&](Real e) { return increasing ? f(e) < 0 : f(e) > 0; };
   const auto bracket = bracket_from_one<Real>(below);
-  const Real lo = bracket.first, hi = bracket.second;
+  Real lo = bracket.first, hi = bracket.second;  // not const: returned (a class Real moves)
   const Real flo = f(lo), fhi = f(hi);
   if (flo == 0) return lo;
   if (fhi == 0) return hi;
@@ -86,7 +86,7 @@ Real invert_monotonic(G g, Real target, bool increasing, bool jumps_at_zero, con
   boost::uintmax_t max_iter = boost::math::policies::get_max_root_iterations<Policy>();
   const auto r = boost::math::tools::toms748_solve(
       f, lo, hi, flo, fhi, boost::math::tools::eps_tolerance<Real>(), max_iter, pol);
-  const Real root = (r.first + r.second) / 2;
+  Real root = (r.first + r.second) / 2;  // not const: returned
   if (jumps_at_zero && root < boost::math::tools::min_value<Real>())
     return raise_argument_error(function, "the target",
                                 "reached at some ratio, but this profile jumps over it at 0",

@@ -233,7 +233,7 @@ class metric_projector {
       using std::fabs;
       if (previous && previous->eps > 0 && previous->eps < std::numeric_limits<Real>::infinity()) {
         const Real gap = fabs(d.eps - previous->eps);
-        const Real secant = difference_slope(d, previous->eps, previous->ft);
+        Real secant = difference_slope(d, previous->eps, previous->ft);
         if (gap > 0 && gap <= d.eps / 10 && secant > 0 && (boost::math::isfinite)(secant))
           return secant;
       }
@@ -314,7 +314,9 @@ class metric_projector {
     return result(x);
   }
   static constexpr int max_newton_iterations = 100;
-  static constexpr int max_line_steps = 60;
+  // Each rejected t at least halves the next: the type's digits of halvings
+  // take any step below the floor of s's rounding.
+  static constexpr int max_line_steps = std::numeric_limits<Real>::digits + 8;
 
   // ∇Ψ·δ at a point, and the bound of its rounding: a few ulp of the sum of
   // the magnitudes of its terms (M⁻¹s, ∇D, whose profile values are good to
@@ -343,13 +345,17 @@ class metric_projector {
   // A point s + tδ where Ψ is lower, into `next`; false if there is none
   // beyond rounding.  Along the line φ(t) = Ψ(s + tδ) is convex with
   // φ′(0) < 0, so wherever φ′(t) ≤ 0, φ fell all the way from 0 to t: t is
-  // taken.  So is a t where φ′ rose to at most half |φ′(0)| and Ψ is no
-  // higher to its rounding (near the line's minimum, as a Newton step near
-  // the answer).  Otherwise the minimum lies before t: the next t is the
-  // secant root of φ′ between 0 and t, kept within [t/10, 9t/10].  A t
-  // taken with φ′(t) ≤ 0 and φ′(t/θ) > 0 for the last rejected t/θ
-  // (θ ≥ 1/10) lowers Ψ by at least a tenth of what the exact line search
-  // would (convexity), which keeps Newton's method globally convergent.
+  // taken.  So is a t that lowers Ψ by 10⁻⁴ of its promise tφ′(0) (Armijo's
+  // test, where Ψ's differences are resolved: a step across a near-corner
+  // of D, where φ′ jumps), and a t where φ′ rose to at most half |φ′(0)|
+  // and Ψ is no higher to its rounding (near the line's minimum, as a
+  // Newton step near the answer).  Otherwise the minimum lies before t: the
+  // next t is the secant root of φ′ between 0 and t, kept within
+  // [t/10, t/2] (at least halved: where φ′ jumps, the secant hardly
+  // moves).  A t taken with φ′(t) ≤ 0 after a rejected t/θ (θ ≥ 1/10)
+  // lowers Ψ by at least a tenth of what the exact line search would
+  // (convexity), and Armijo's steps by their promise, which keeps Newton's
+  // method globally convergent.
   bool line_search(const point_data& x, const vec& step, const directional& start,
                    point_data& next) const {
     const Real floor = 4 * epsilon() * largest(x.s);
@@ -358,12 +364,13 @@ class metric_projector {
       point_data y = point(shifted(x.s, step, t));
       const directional d = along(y, gradient(y), step);
       const Real slack = 4 * epsilon() * (x.psi_scale + y.psi_scale);
-      if (d.slope <= 0 || (d.slope <= -start.slope / 2 && y.psi <= x.psi + slack)) {
+      const bool armijo = y.psi < x.psi + Real(1e-4) * t * start.slope;
+      if (d.slope <= 0 || armijo || (d.slope <= -start.slope / 2 && y.psi <= x.psi + slack)) {
         next = y;
         return true;
       }
       const Real secant = t * (-start.slope) / (d.slope - start.slope);
-      t = (std::min)((std::max)(secant, t / 10), 9 * t / 10);
+      t = (std::min)((std::max)(secant, t / 10), t / 2);
     }
     return false;
   }
