@@ -349,13 +349,13 @@ class metric_projector {
   // test, where Ψ's differences are resolved: a step across a near-corner
   // of D, where φ′ jumps), and a t where φ′ rose to at most half |φ′(0)|
   // and Ψ is no higher to its rounding (near the line's minimum, as a
-  // Newton step near the answer).  Otherwise the minimum lies before t: the
-  // next t is the secant root of φ′ between 0 and t, kept within
-  // [t/10, t/2] (at least halved: where φ′ jumps, the secant hardly
-  // moves).  A t taken with φ′(t) ≤ 0 after a rejected t/θ (θ ≥ 1/10)
-  // lowers Ψ by at least a tenth of what the exact line search would
-  // (convexity), and Armijo's steps by their promise, which keeps Newton's
-  // method globally convergent.
+  // Newton step near the answer).  Otherwise t is halved.  (A secant of φ′
+  // for the next t, tried, zig-zags across such a corner: an exact line
+  // search with a poor Hessian.)  A t taken with φ′(t) ≤ 0 after 2t was
+  // rejected lies in [t*/2, t*] for the line's minimum t*, and lowers Ψ by
+  // at least half what the exact line search would (convexity); Armijo's
+  // steps lower it by their promise: Newton's method stays globally
+  // convergent.
   bool line_search(const point_data& x, const vec& step, const directional& start,
                    point_data& next) const {
     const Real floor = 4 * epsilon() * largest(x.s);
@@ -369,8 +369,7 @@ class metric_projector {
         next = y;
         return true;
       }
-      const Real secant = t * (-start.slope) / (d.slope - start.slope);
-      t = (std::min)((std::max)(secant, t / 10), t / 2);
+      t /= 2;
     }
     return false;
   }
