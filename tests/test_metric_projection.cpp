@@ -295,4 +295,44 @@ TEST(MetricProjection, RegressionStallWithANearlySingularMetric) {
   expect_optimal(p, metric.entries(), z, r);
 }
 
+// issue 26 - a load concentrated within radius 1e-6 plus a ring (fuzz_impulse,
+// after the line search first went by the slope's sign): D has a near-corner
+// at ε ≈ 1e-6, the line search's secant crawled there, and the answer came
+// out with the force reversed, 600 times farther than the nearest point.
+TEST(MetricProjection, RegressionNearCornerOfAConcentratedLoad) {
+  const auto p = make_weighted_sum<double>(
+      {41.8390708471192738216, 7.81116904277345813767},
+      scaled<uniform_disk<double>>(uniform_disk<double>(), 9.99999999999999954748e-07),
+      ring<double>());
+  const matrix m{
+      {{9.79873218838664696218e-33, 9.89884952324594475011e-33, 9.87951583277085400931e-33},
+       {9.89884952324594475011e-33, 1.89223252399063083355e-32, 1.94262695312499979925e-32},
+       {9.87951583277085400931e-33, 1.94262695312499979925e-32, 2.01172356469797618285e-32}}};
+  const tangent_wrench<double> z{0.5, -1, 0.56249964096966920124};
+  const auto r = project_to_limit_set(p, z, planar_metric<double>(m));
+  expect_optimal(p, m, z, r);
+  EXPECT_GT(r.point.force_x * z.force_x + r.point.force_y * z.force_y, 0) << "the force along z's";
+}
+
+// issue 26 - a point 1e-14 beyond the corner (1, 0) in a metric conditioned
+// 1e7 (fuzz_precision): the convergence test summed the rounding of every
+// component of ∇Ψ, so the force's (of size 1) hid the torque's (1e-11), and
+// Newton stopped at ε = 3e9 with a torque of 8e-11, 1e15 times farther (in
+// the metric) than the nearest point, the corner itself to rounding.
+TEST(MetricProjection, RegressionJustBeyondTheSlidingCorner) {
+  const matrix m{{{3.60824494955364454278e-05, 0.0360498030912404995862, 0.0116453197301683609999},
+                  {0.0360498030912404995862, 72.2172559404022962326, 47.6583507286468943676},
+                  {0.0116453197301683609999, 47.6583507286468943676, 135.123387023362909076}}};
+  const tangent_wrench<double> z{1, 1.30385149454959074868e-07, 3.4932955679265537702e-137};
+  const double zf = std::hypot(z.force_x, z.force_y);
+  const tangent_wrench<double> corner{z.force_x / zf, z.force_y / zf, 0};
+  for (int k = 0; k < 2; ++k) {
+    const auto r = k == 0 ? project_to_limit_set(uniform_disk<>(), z, planar_metric<double>(m))
+                          : project_to_limit_set(hertz<>(), z, planar_metric<double>(m));
+    ASSERT_FALSE(r.sticking);
+    EXPECT_GT(r.ratio, 1e15);
+    EXPECT_LE(metric_distance(m, r.point, z), metric_distance(m, corner, z) * (1 + 1e-9));
+  }
+}
+
 }  // namespace

@@ -72,14 +72,18 @@ class metric_projector {
     // With a start: if z lies beyond the support plane of L₃ with the normal
     // n at the start's curve point (zᵀn > D(n) = max over L₃ of pᵀn), z is
     // outside and n a descent direction: Newton from there, one evaluation
-    // (none from a curve point).  Only the start depends on the point: every
-    // result rests on the profile's own values.
+    // (none from a curve point).  Nothing is decided on the point's values:
+    // Newton starts only where Ψ, from the profile's own values, is < 0
+    // (which proves z outside: Ψ(0) = 0 is the minimum inside).
     if (start > 0 && start < std::numeric_limits<Real>::infinity()) {
       const bool known =
           from && (boost::math::isfinite)(from->force) && (boost::math::isfinite)(from->torque);
       const ray r = normal_ray(start, known ? force_torque_result<Real>{from->force, from->torque}
                                             : p_.force_torque(start));
-      if (r.resolved) return descend(r);
+      if (r.resolved) {
+        const point_data x = ray_start(r);
+        if (x.psi < 0) return newton(x);
+      }
     }
     // Otherwise the 2-D projection decides sticking on the magnitudes and
     // gives the curve point, along z's direction, to start from.
@@ -87,7 +91,10 @@ class metric_projector {
         limit_projector<Profile>(p_, length(z_[0], z_[1]), fabs(z_[2]), torque_weight())(start);
     if (flat.sticking) return {{z_[0], z_[1], z_[2]}, true, std::numeric_limits<Real>::quiet_NaN()};
     const ray r = normal_ray(flat.ratio, {flat.force, flat.torque});
-    if (r.resolved) return descend(r);
+    if (r.resolved) {
+      const point_data x = ray_start(r);
+      if (x.psi < 0) return newton(x);
+    }
     // No gain beyond rounding (z outside L₃ only by rounding): the 2-D answer
     // itself, on the curve and within rounding of z.
     return result_on_ray(r, {flat.force, flat.torque}, flat.ratio);
@@ -149,15 +156,6 @@ class metric_projector {
     return r;
   }
 
-  // Newton from the best point of the ray: Ψ(τn) = ½τ²nᵀM⁻¹n − τ·gain is
-  // least at τ = gain/(nᵀM⁻¹n) > 0, where Ψ < 0.  Every later iterate keeps
-  // Ψ below that, away from the kink at s = 0, where a start in a poor
-  // direction (an ill-conditioned M) would make the iteration collapse.
-  wrench_projection<Real> descend(const ray& r) const {
-    const Real tau = r.gain / dot(r.n, multiply(inverse_, r.n));
-    return newton(point({tau * r.n[0], tau * r.n[1], tau * r.n[2]}));
-  }
-
   wrench_projection<Real> result_on_ray(const ray& r, const force_torque_result<Real>& c,
                                         Real eps) const {
     return {{c.force * r.dx, c.force * r.dy, z_[2] < 0 ? Real(-c.torque) : c.torque}, false, eps};
@@ -217,6 +215,17 @@ class metric_projector {
     d.psi = quadratic + dissipation - linear;
     d.psi_scale = fabs(quadratic) + dissipation + fabs(linear);
     return d;
+  }
+
+  // Newton's start, the best point of the ray: Ψ(τn) = ½τ²nᵀM⁻¹n − τ·gain
+  // is least at τ = gain/(nᵀM⁻¹n) > 0, where Ψ < 0 if the gain is the
+  // profile's own.  Every later iterate keeps Ψ below that, away from the
+  // kink at s = 0, where a start in a poor direction (an ill-conditioned M)
+  // would make the iteration collapse; so the caller starts there only if
+  // Ψ < 0 (a curve point's values may not be the profile's).
+  point_data ray_start(const ray& r) const {
+    const Real tau = r.gain / dot(r.n, multiply(inverse_, r.n));
+    return point({tau * r.n[0], tau * r.n[1], tau * r.n[2]});
   }
 
   // 𝓕′(ε), closed form where the profile has one, else the secant through
@@ -306,7 +315,8 @@ class metric_projector {
       const vec g = gradient(x);
       const vec step = newton_step(x, g, iteration > 0 ? &previous : nullptr);
       const directional start = along(x, g, step);
-      if (!(start.slope < -start.rounding) || largest(step) <= tiny * largest(x.s))
+      const bool at_rounding = !(start.slope < -start.rounding) && !start.resolved;
+      if (at_rounding || !(start.slope < 0) || largest(step) <= tiny * largest(x.s))
         return result(x);
       previous = x;
       if (!line_search(previous, step, start, x)) return result(x);
@@ -321,19 +331,27 @@ class metric_projector {
   // ∇Ψ·δ at a point, and the bound of its rounding: a few ulp of the sum of
   // the magnitudes of its terms (M⁻¹s, ∇D, whose profile values are good to
   // a few ulp, and z) along δ.
+  // `resolved`: some component of ∇Ψ is above 64 ulp of its own terms'
+  // magnitudes (as where z lies by 1e-14 beyond the corner (1, 0): the
+  // torque's terms are 1e-11, the force's 1, and a sum over all the
+  // components would call the torque's converged 1e5 times too early).
   struct directional {
     Real slope, rounding;
+    bool resolved;
   };
   directional along(const point_data& x, const vec& g, const vec& step) const {
     using std::fabs;
     Real sum = 0, size = 0;
+    bool resolved = false;
     for (std::size_t i = 0; i < 3; ++i) {
       Real row = 0;
       for (std::size_t j = 0; j < 3; ++j) row += fabs(inverse_[i][j] * x.s[j]);
+      const Real terms = row + fabs(x.grad_d[i]) + fabs(z_[i]);
       sum += g[i] * step[i];
-      size += (row + fabs(x.grad_d[i]) + fabs(z_[i])) * fabs(step[i]);
+      size += terms * fabs(step[i]);
+      resolved = resolved || fabs(g[i]) > 64 * epsilon() * terms;
     }
-    return {sum, epsilon() * size};
+    return {sum, epsilon() * size, resolved};
   }
 
   // ∇Ψ = M⁻¹s + ∇D − z.
@@ -358,8 +376,19 @@ class metric_projector {
   // convergent.
   bool line_search(const point_data& x, const vec& step, const directional& start,
                    point_data& next) const {
+    using std::fabs;
     const Real floor = 4 * epsilon() * largest(x.s);
+    // A step that takes the torque's slip across 0 goes first as far as 0
+    // (pure sliding, where D's curvature in s_t is ⟨r²⟩/(2|s_f|)): beyond,
+    // D is a V in s_t (|s_t|⟨r⟩ at small ε) that the model at this side does
+    // not see, and full steps across zig-zag (fuzz_impulse: 100 iterations).
     Real t = 1;
+    // (Not from where s_t is already below √ε of s: there the model sees
+    // both sides, and the answer may lie just across.)
+    using std::sqrt;
+    static const Real near = sqrt(epsilon());
+    if (x.s[2] * step[2] < 0 && fabs(step[2]) > fabs(x.s[2]) && fabs(x.s[2]) > near * largest(x.s))
+      t = -x.s[2] / step[2];
     for (int k = 0; k < max_line_steps && t * largest(step) > floor; ++k) {
       point_data y = point(shifted(x.s, step, t));
       const directional d = along(y, gradient(y), step);
