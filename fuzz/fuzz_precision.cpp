@@ -124,7 +124,8 @@ void fuzz_cap(fuzz_input& in, const P& p) {
   const Real a = in.real<Real>(), n = in.real<Real>(), mu = in.unit<Real>();
   for (Real x : {phi, damping_torque, kt, kw, a, n, mu}) describe("arg", x);
   bool finite = std::isfinite(phi) && std::isfinite(damping_torque);
-  for (int i = 0; i < N; ++i) finite = finite && std::isfinite(xi[i]) && std::isfinite(damping[i]);
+  for (std::size_t i = 0; i < std::size_t(N); ++i)
+    finite = finite && std::isfinite(xi[i]) && std::isfinite(damping[i]);
   const bool ok = finite && kt > 0 && std::isfinite(kt) && kw > 0 && std::isfinite(kw) && a > 0 &&
                   std::isfinite(a) && n >= 0 && std::isfinite(n) && mu >= 0 && std::isfinite(mu);
   // Valid where nothing on the way can overflow: the type's square root of
@@ -135,7 +136,8 @@ void fuzz_cap(fuzz_input& in, const P& p) {
   };
   bool tame = ok && moderate(phi) && moderate(damping_torque) && moderate(kt) && moderate(kw) &&
               moderate(a) && moderate(n) && moderate(mu);
-  for (int i = 0; i < N; ++i) tame = tame && moderate(xi[i]) && moderate(damping[i]);
+  for (std::size_t i = 0; i < std::size_t(N); ++i)
+    tame = tame && moderate(xi[i]) && moderate(damping[i]);
   const validity v = !ok ? validity::invalid : tame ? validity::valid : validity::ambiguous;
   expect(v, "cap_trial_state", [&] {
     const auto r = spinslide::cap_trial_state(
@@ -148,7 +150,7 @@ void fuzz_cap(fuzz_input& in, const P& p) {
     const char* call = "cap_trial_state";
     const long double load = static_cast<long double>(mu) * n;
     long double f2 = 0;
-    for (int i = 0; i < N; ++i) {
+    for (std::size_t i = 0; i < std::size_t(N); ++i) {
       check_finite(r.force[i], call, "force");
       f2 += static_cast<long double>(r.force[i]) * r.force[i];
     }

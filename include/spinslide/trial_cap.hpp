@@ -36,6 +36,7 @@
 #include <boost/math/special_functions/fpclassify.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <initializer_list>
 #include <limits>
 
@@ -123,7 +124,7 @@ capped_friction<Vec, typename Profile::value_type> cap_checked(
   };
   // The trial friction, which must not overflow (|F| finite: each component is).
   vector3<Real> force{};
-  for (int i = 0; i < N; ++i) force[i] = -kt * in.spring[i] + in.damping[i];
+  for (std::size_t i = 0; i < std::size_t(N); ++i) force[i] = -kt * in.spring[i] + in.damping[i];
   const Real t = -kw * in.twist + in.damping_torque;
   const Real f = vector_norm(force[0], force[1], force[2]);
   if (!((isfinite)(f) && (isfinite)(t)))
@@ -162,7 +163,7 @@ capped_friction<Vec, typename Profile::value_type> cap_checked(
   // the capped force, F/k beyond the largest value, is a domain error).
   const Real scale = f > 0 ? Real(cap.force * load / f) : Real(0);
   vector3<Real> spring{};
-  for (int i = 0; i < N; ++i) {
+  for (std::size_t i = 0; i < std::size_t(N); ++i) {
     force[i] *= scale;
     spring[i] = -(force[i] - in.damping[i]) / kt;
   }
