@@ -222,7 +222,17 @@ void project_the_fuzzers_metric() {
 template <class Real>
 class ProjectionPrecision : public ::testing::Test {};
 using Types = ::testing::Types<float, double, long double, big>;
-TYPED_TEST_SUITE(ProjectionPrecision, Types);
+// Test names per type (for CTest, without spaces).
+struct TypeNames {
+  template <class T>
+  static std::string GetName(int) {
+    std::string n = name_of<T>();
+    for (char& c : n)
+      if (c == ' ') c = '_';
+    return n;
+  }
+};
+TYPED_TEST_SUITE(ProjectionPrecision, Types, TypeNames);
 
 TYPED_TEST(ProjectionPrecision, UniformDiskOverRandomMetrics) {
   project_random_cases(uniform_disk<TypeParam>(), "uniform_disk");
