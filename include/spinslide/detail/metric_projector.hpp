@@ -302,12 +302,14 @@ class metric_projector {
   // values, whose differences round away first: with a metric conditioned
   // near its limit a decrease of Ψ of 1e-19 is all a step of ∇Ψ = 1e-7 can
   // show, below Ψ's rounding, and a line search on values stalls there.
-  // Converged when Newton's decrement −∇Ψ·δ is within that rounding (no
-  // direction left in which Ψ falls that this type can show) or the step is
-  // below 4 ulp of s.  Never fails: every iterate is on the curve with s along
-  // its normal, each step lowers the strictly convex Ψ (convexity, below),
-  // and after max_newton_iterations (never reached in the tests) the last
-  // iterate is the answer.
+  // Converged when Newton's decrement −∇Ψ·δ is within that rounding and
+  // every component of ∇Ψ within its own (along(): no direction left in
+  // which Ψ falls that this type can show), when δ is no descent direction,
+  // or when the step is below 4 ulp of s.  Never fails: every iterate is on
+  // the curve with s along its normal, each step lowers the strictly convex
+  // Ψ (line_search), and after max_newton_iterations (a load concentrated
+  // within radius 1e-6 took 54; docs/reliability.md) the last iterate is the
+  // answer.
   wrench_projection<Real> newton(point_data x) const {
     const Real tiny = 4 * epsilon();
     point_data previous{};
