@@ -356,7 +356,7 @@ void projection(benchmark::State& s, bool sliding, bool warm) {
     for (const auto& c : cases) {
       const auto r =
           spinslide::project_to_limit_set(projected<P>(), c.force, c.torque, 1.0,
-                                          spinslide::starting_ratio<double>{warm ? c.start : 0.0});
+                                          spinslide::curve_point<double>{warm ? c.start : 0.0});
       benchmark::DoNotOptimize(r);
     }
   }
@@ -387,7 +387,7 @@ void projection_sliding_from_point(benchmark::State& s) {
       const auto ft = projected<P>().force_torque(e);
       v.push_back(spinslide::project_to_limit_set(projected<P>(), ft.force + 0.2 * e,
                                                   ft.torque + 0.2, 1.0,
-                                                  spinslide::starting_ratio<double>{e})
+                                                  spinslide::curve_point<double>{e})
                       .curve());
     }
     return v;
@@ -443,7 +443,7 @@ void impulse(benchmark::State& s, double normal, bool warm) {
     for (const auto& c : cases) {
       const auto r =
           spinslide::impulse_friction(projected<P>(), c.v, c.spin, coupled_inverse_mass(), load,
-                                      spinslide::starting_ratio<double>{warm ? c.start : 0.0});
+                                      spinslide::curve_point<double>{warm ? c.start : 0.0});
       benchmark::DoNotOptimize(r);
     }
   }
@@ -489,17 +489,16 @@ const std::vector<spring_case>& spring_cases(bool sliding) {
     for (double e : inputs<double>()) {
       const auto c = projected<P>().force_torque(e);
       spring_case sc{
-          {{load * c.force / k.tangential.value, 0}, load * a * c.torque / k.twisting.value, e},
+          {{load * c.force / k.tangential.value, 0}, load * a * c.torque / k.twisting.value, {e}},
           {-e * a * dphi, 0},
           -dphi};
       // the curve point the steady slip keeps (ε, 𝓕, 𝓣, 𝓕′, 𝓕″ at ε): the
       // projection of a point on the normal at ε, from next to ε
       sc.history.curve =
           spinslide::project_to_limit_set(projected<P>(), c.force + 0.01 * 2 * e, c.torque + 0.01,
-                                          2.0, spinslide::starting_ratio<double>{e * (1 + 1e-4)})
+                                          2.0, spinslide::curve_point<double>{e * (1 + 1e-4)})
               .curve();
-      sc.history.ratio = sc.history.curve.ratio;
-      if (!slide) sc = {{{0, 0}, 0, 0}, {1e-7, 0}, 1e-5};
+      if (!slide) sc = {{{0, 0}, 0, {}}, {1e-7, 0}, 1e-5};
       out.push_back(sc);
     }
     return out;

@@ -210,26 +210,26 @@ void fuzz_impulse_law(fuzz_input& in, const P& p) {
                        : scales && conditioned ? validity::valid
                                                : validity::ambiguous;
     expect(v, "impulse_friction", [&] {
-      spinslide::friction_impulse<std::array<double, 2>, double> r{};
+      spinslide::friction_result<std::array<double, 2>, double> r{};
       if (!converges(p, [&] {
             r = spinslide::impulse_friction(p, std::array<double, 2>{vx, vy}, spin, inverse_mass,
                                             c);
           }))
         return;
       const double limit = mu * load;
-      check_finite(r.linear[0], "impulse_friction", "linear[0]");
-      check_finite(r.angular, "impulse_friction", "angular");
+      check_finite(r.force[0], "impulse_friction", "force[0]");
+      check_finite(r.torque, "impulse_friction", "torque");
       if (r.sticking) return;
-      check(std::hypot(r.linear[0], r.linear[1]) <= force_bound(limit), "impulse_friction",
+      check(std::hypot(r.force[0], r.force[1]) <= force_bound(limit), "impulse_friction",
             "|P| > mu Lambda");
-      check(std::fabs(r.angular) <= torque_bound(limit, a, p.mean_radius()), "impulse_friction",
+      check(std::fabs(r.torque) <= torque_bound(limit, a, p.mean_radius()), "impulse_friction",
             "|L| > mu Lambda a <r>");
       // Kinetic energy ½ sᵀW⁻¹s of the relative motion, before and after.
       const auto& wi = inverse_mass.inverse();
       const std::array<double, 3> s{vx, vy, spin};
       std::array<double, 3> after = s;
       for (std::size_t i = 0; i < 3; ++i)
-        after[i] += w[i][0] * r.linear[0] + w[i][1] * r.linear[1] + w[i][2] * r.angular;
+        after[i] += w[i][0] * r.force[0] + w[i][1] * r.force[1] + w[i][2] * r.torque;
       double e0 = 0, e1 = 0;
       for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) {
@@ -271,7 +271,7 @@ void fuzz_springs(fuzz_input& in, const P& p) {
                         a > 1e-60 && small(a) && mu * n > 1e-60 && small(mu * n);
   const validity v = !ok ? validity::invalid : moderate ? validity::valid : validity::ambiguous;
   expect(v, "spring_history_friction", [&] {
-    spinslide::spring_history<std::array<double, 2>, double> h{{x0, y0}, phi0, 0};
+    spinslide::spring_history<std::array<double, 2>, double> h{{x0, y0}, phi0, {}};
     const spinslide::spring_stiffness<double> k{spinslide::tangential_stiffness<double>{kt},
                                                 spinslide::twisting_stiffness<double>{kw}};
     const spinslide::force_contact<double> c{spinslide::patch_radius<double>{a},

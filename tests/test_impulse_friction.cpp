@@ -59,9 +59,9 @@ stepped_throw step_throw(double gamma, double v0, double w0, double dt, double p
   const auto c = contact(1, dt, 1);
   bool stopped = false;
   for (long k = 0; k < 100000000 && !stopped; ++k) {
-    const auto p = impulse_friction(disk, v, w, inverse_mass, c, starting_ratio<double>{last});
-    v = {v[0] + p.linear[0], v[1] + p.linear[1]};
-    w += p.angular / gamma;
+    const auto p = impulse_friction(disk, v, w, inverse_mass, c, curve_point<double>{last});
+    v = {v[0] + p.force[0], v[1] + p.force[1]};
+    w += p.torque / gamma;
     t += dt;
     out.distance += std::hypot(v[0], v[1]) * dt;
     out.angle += std::fabs(w) * dt;
@@ -78,8 +78,8 @@ stepped_throw step_throw(double gamma, double v0, double w0, double dt, double p
   }
   for (int k = 0; k < 1000; ++k) {  // at rest it stays: no creep, no chatter
     const auto p = impulse_friction(disk, v, w, inverse_mass, c);
-    v = {v[0] + p.linear[0], v[1] + p.linear[1]};
-    w += p.angular / gamma;
+    v = {v[0] + p.force[0], v[1] + p.force[1]};
+    w += p.torque / gamma;
     out.stayed_at_rest = out.stayed_at_rest && p.sticking;
     out.rest_speed = std::max(out.rest_speed, std::hypot(v[0], v[1]) + std::fabs(w));
     out.drift += std::hypot(v[0], v[1]) * dt;
@@ -145,8 +145,8 @@ TEST(ImpulseFriction, BlockOnASlopeSticksExactlyAndSlidesExactly) {
     for (int k = 0; k < 10000; ++k) {
       v[0] += g * std::sin(alpha) * dt;
       const auto p = impulse_friction(patch, v, w, inverse_mass, c);
-      v = {v[0] + p.linear[0] / mass, v[1] + p.linear[1] / mass};
-      w += p.angular / inertia;
+      v = {v[0] + p.force[0] / mass, v[1] + p.force[1] / mass};
+      w += p.torque / inertia;
       x += v[0] * dt;
     }
     if (slope < mu) {
@@ -180,7 +180,7 @@ TEST(ImpulseFriction, CoupledInverseMassSticksOrSlipsByMaximumDissipation) {
     const double w = u(rng), a = 0.05 + 0.45 * std::fabs(u(rng)), load = std::exp(4 * u(rng));
     const auto c = contact(a, load, 0.5);
     const auto p = impulse_friction(sphere, v, w, inverse_mass, c);
-    const double imp[3] = {p.linear[0], p.linear[1], p.angular};
+    const double imp[3] = {p.force[0], p.force[1], p.torque};
     const double before[3] = {v[0], v[1], w};
     double after[3];
     for (std::size_t i = 0; i < 3; ++i)
@@ -213,12 +213,12 @@ TEST(ImpulseFriction, NoLoadNoFrictionAndBadInput) {
   const planar_metric<double> identity(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
   const auto free = impulse_friction(disk, vec2{0.3, 0}, 1.0, identity, contact(1, 0, 0.5));
   EXPECT_FALSE(free.sticking);
-  EXPECT_EQ(free.linear[0], 0);
-  EXPECT_EQ(free.angular, 0);
+  EXPECT_EQ(free.force[0], 0);
+  EXPECT_EQ(free.torque, 0);
   EXPECT_DOUBLE_EQ(free.ratio, 0.3);
   const auto rest = impulse_friction(disk, vec2{0, 0}, 0.0, identity, contact(1, 1, 0.5));
   EXPECT_TRUE(rest.sticking);
-  EXPECT_EQ(rest.linear[0], 0);
+  EXPECT_EQ(rest.force[0], 0);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(impulse_friction(disk, vec2{nan, 0}, 1.0, identity, contact(1, 1, 0.5)),
                std::domain_error);
@@ -239,7 +239,7 @@ std::array<double, 2> energies(const planar_metric<double>& inverse_mass,
   const auto& w = inverse_mass.entries();
   std::array<double, 3> after = s;
   for (std::size_t i = 0; i < 3; ++i)
-    after[i] += w[i][0] * r.linear[0] + w[i][1] * r.linear[1] + w[i][2] * r.angular;
+    after[i] += w[i][0] * r.force[0] + w[i][1] * r.force[1] + w[i][2] * r.torque;
   double e0 = 0, e1 = 0;
   for (std::size_t i = 0; i < 3; ++i)
     for (std::size_t j = 0; j < 3; ++j) {
@@ -292,7 +292,7 @@ TEST(ImpulseFriction, RegressionZigZagAcrossPureSliding) {
   // The slip after the step: ε = |v⁺|/(a|ω⁺|), which the law reports.
   std::array<double, 3> after = s;
   for (std::size_t i = 0; i < 3; ++i)
-    after[i] += w[i][0] * r.linear[0] + w[i][1] * r.linear[1] + w[i][2] * r.angular;
+    after[i] += w[i][0] * r.force[0] + w[i][1] * r.force[1] + w[i][2] * r.torque;
   EXPECT_NEAR(r.ratio, std::hypot(after[0], after[1]) / (0.5 * std::fabs(after[2])),
               1e-6 * r.ratio);
 }

@@ -209,7 +209,7 @@ void expect_normal_projects_to_foot(const P& p, double w, double eps, double lam
                                     double start = 0) {
   const auto c = p.force_torque(eps);
   const double x = c.force + lambda * w * eps, y = c.torque + lambda;
-  const auto r = project_to_limit_set(p, x, y, w, starting_ratio<double>{start});
+  const auto r = project_to_limit_set(p, x, y, w, curve_point<double>{start});
   const std::string where = name + " w=" + std::to_string(w) + " eps=" + std::to_string(eps) +
                             " lambda=" + std::to_string(lambda) + " from " + std::to_string(start);
   EXPECT_FALSE(r.sticking) << where;
@@ -276,7 +276,7 @@ void expect_warm_projections_on_the_curve(const P& p, const std::string& name) {
     const double off = (u(rng) < 0.5 ? -1 : 1) * std::pow(10.0, -12 + 11 * u(rng));
     const auto c = p.force_torque(eps);
     const double x = c.force + lambda * w * eps, y = c.torque + lambda;
-    const auto r = project_to_limit_set(p, x, y, w, starting_ratio<double>{eps * (1 + off)});
+    const auto r = project_to_limit_set(p, x, y, w, curve_point<double>{eps * (1 + off)});
     const auto q = p.force_torque(r.ratio);
     const double ulp = std::numeric_limits<double>::epsilon();
     worst_force = std::max(worst_force, std::fabs(r.force - q.force) / (q.force * ulp));
@@ -392,7 +392,7 @@ TEST(LimitSet, AStartingRatioGivesTheSameProjection) {
     const double x = pts.x[i] + 0.5, y = pts.y[i] + 0.3;
     const auto cold = project_to_limit_set(p, x, y, 1.0);
     for (const double start : {1e-8, 0.01, 1.0, 100.0, 1e8}) {
-      const auto warm = project_to_limit_set(p, x, y, 1.0, starting_ratio<double>{start});
+      const auto warm = project_to_limit_set(p, x, y, 1.0, curve_point<double>{start});
       expect_same_projection(warm, cold, 1e-12, 1e-14, start);
     }
   }
@@ -409,7 +409,7 @@ void expect_evaluations_from_nearby_start(const P& p, int calls, int slopes) {
     const auto c = p.force_torque(eps);
     const double x = c.force + 0.3 * eps, y = c.torque + 0.3;
     p.calls = p.slopes = 0;
-    const auto r = project_to_limit_set(p, x, y, 1.0, starting_ratio<double>{eps * (1 + 1e-4)});
+    const auto r = project_to_limit_set(p, x, y, 1.0, curve_point<double>{eps * (1 + 1e-4)});
     EXPECT_NEAR(r.ratio / eps, 1, 1e-12) << eps;
     EXPECT_LE(p.calls, calls) << eps;
     EXPECT_LE(p.slopes, slopes) << eps;
@@ -436,7 +436,7 @@ TEST(LimitSet, ASlidingResultCarriesTheCurvePoint) {
     const auto c = h.force_torque(eps);
     for (const double start : {0.0, eps * (1 + 1e-4)}) {
       const auto r = project_to_limit_set(h, c.force + 0.3 * eps, c.torque + 0.3, 2.0,
-                                          starting_ratio<double>{start});
+                                          curve_point<double>{start});
       ASSERT_FALSE(r.sticking);
       const auto p = r.curve();
       EXPECT_EQ(p.ratio, r.ratio);
@@ -474,10 +474,10 @@ TEST(LimitSet, ACurvePointStartSavesTheFirstEvaluation) {
     const double x = c.force + 0.3 * eps, y = c.torque + 0.3;
     // the last step: a point that projected a little away, at 1.0001 ε
     const auto last =
-        project_to_limit_set(h, x * 1.001, y * 0.999, 1.0, starting_ratio<double>{eps});
+        project_to_limit_set(h, x * 1.001, y * 0.999, 1.0, curve_point<double>{eps});
     ASSERT_FALSE(last.sticking);
     h.calls = 0;
-    const auto from_ratio = project_to_limit_set(h, x, y, 1.0, starting_ratio<double>{last.ratio});
+    const auto from_ratio = project_to_limit_set(h, x, y, 1.0, curve_point<double>{last.ratio});
     const int by_ratio = h.calls;
     h.calls = 0;
     const auto from_point = project_to_limit_set(h, x, y, 1.0, last.curve());
@@ -531,7 +531,7 @@ TEST(LimitSet, BadInputIsADomainError) {
   for (const double bad : {0.0, -1.0, nan, inf})
     EXPECT_THROW(project_to_limit_set(p, 0.5, 0.5, bad), std::domain_error) << bad;
   for (const double bad : {-1.0, nan})
-    EXPECT_THROW(project_to_limit_set(p, 0.5, 0.5, 1.0, starting_ratio<double>{bad}),
+    EXPECT_THROW(project_to_limit_set(p, 0.5, 0.5, 1.0, curve_point<double>{bad}),
                  std::domain_error)
         << bad;
   try {
@@ -570,7 +570,7 @@ using spinslide::limit_projection;
 // numbers (200 iterations: w·ε underflowed where w·ε·(y − 𝓣) did not): (0, ⟨r⟩).
 template <class P>
 void expect_top_corner(const P& p, double x, double y, double w, double start) {
-  const auto r = project_to_limit_set(p, x, y, w, starting_ratio<double>{start});
+  const auto r = project_to_limit_set(p, x, y, w, curve_point<double>{start});
   EXPECT_FALSE(r.sticking);
   EXPECT_LE(r.force, 1e-300);
   EXPECT_NEAR(r.torque, p.mean_radius(), 4e-16);
@@ -590,7 +590,7 @@ TEST(LimitSet, RegressionExtremeWeightsAndStarts) {
   const ring<> ring_profile;
   const double y = 0.962379485841000303914;
   const auto r = project_to_limit_set(ring_profile, 1.0, y, 8.27153894899409705595e+194,
-                                      starting_ratio<double>{9.35149256916424780703e+133});
+                                      curve_point<double>{9.35149256916424780703e+133});
   EXPECT_NEAR(r.torque, y, 4e-16);
   EXPECT_NEAR(r.force, force_at_torque(ring_profile, y), 1e-14);
   // ε ≈ 8e14, where 𝓕 rounds to 1 - 1e-15 (a secant over a wide gap gave a
@@ -599,7 +599,7 @@ TEST(LimitSet, RegressionExtremeWeightsAndStarts) {
   const double x = 1.8269463011837359101, t = 1.84345448077861973069, w = 0.0581650085310874212507;
   const auto cold = project_to_limit_set(ellipse, x, t, w);
   const auto warm =
-      project_to_limit_set(ellipse, x, t, w, starting_ratio<double>{8.33894707852520555541e+107});
+      project_to_limit_set(ellipse, x, t, w, curve_point<double>{8.33894707852520555541e+107});
   EXPECT_NEAR(warm.ratio / cold.ratio, 1, 1e-9);
   EXPECT_NEAR(warm.torque, cold.torque, 1e-12);
 }
@@ -610,7 +610,7 @@ TEST(LimitSet, RegressionTinyWeights) {
   const boussinesq<> b;
   const auto r =
       project_to_limit_set(b, 1.0, 0.000488281251652677994457, 6.92680035469427654936e-321,
-                           starting_ratio<double>{1.19708502733700794376e+303});
+                           curve_point<double>{1.19708502733700794376e+303});
   EXPECT_FALSE(r.sticking);
   EXPECT_GE(r.force, 1 - 1e-15);
   // τ = 3.8e-9, w = 1.6e149 (libFuzzer): the nearest point has 𝓣 = y to
@@ -618,7 +618,7 @@ TEST(LimitSet, RegressionTinyWeights) {
   const elliptic_limit_surface<> e(3.80247673614897198405e-09);
   const double y = 1.65267799445700822802e-12;
   const auto warm = project_to_limit_set(e, 1.32446307038503641174, y, 1.55808650294502851528e+149,
-                                         starting_ratio<double>{7.04537610969617571996e-321});
+                                         curve_point<double>{7.04537610969617571996e-321});
   EXPECT_NEAR(warm.torque, y, 4 * std::numeric_limits<double>::epsilon() * y);
 }
 }  // namespace

@@ -219,7 +219,7 @@ TEST(MetricProjection, AStartingRatioGivesTheSameProjection) {
     const auto r = project_to_limit_set(h, c.z, metric);
     if (r.sticking) continue;
     for (double start : {1e-3, 0.5, 3.0, 1e4}) {
-      const auto s = project_to_limit_set(h, c.z, metric, starting_ratio<double>{start});
+      const auto s = project_to_limit_set(h, c.z, metric, curve_point<double>{start});
       EXPECT_NEAR(s.point.force_x, r.point.force_x, 1e-14);
       EXPECT_NEAR(s.point.force_y, r.point.force_y, 1e-14);
       EXPECT_NEAR(s.point.torque, r.point.torque, 1e-14);
@@ -258,7 +258,7 @@ TEST(MetricProjection, BadMetricOrPointIsADomainError) {
                    tangent_wrench<double>{0, std::numeric_limits<double>::infinity(), 0}, identity),
                std::domain_error);
   EXPECT_THROW(project_to_limit_set(uniform_disk<>(), tangent_wrench<double>{2, 0, 0}, identity,
-                                    starting_ratio<double>{-1}),
+                                    curve_point<double>{-1}),
                std::domain_error);
 }
 

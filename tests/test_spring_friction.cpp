@@ -40,8 +40,8 @@ template <class P>
 steady steady_slip(const P& p, double eps, const spring_stiffness<double>& k, double theta) {
   const double a = 0.01, dphi = 1e-4;
   const vec2 dxi{eps * a * dphi * std::cos(theta), eps * a * dphi * std::sin(theta)};
-  spring_history<vec2, double> h{{0, 0}, 0, 0};
-  spring_friction<vec2, double> r{};
+  spring_history<vec2, double> h{{0, 0}, 0, {}};
+  friction_result<vec2, double> r{};
   for (int k_step = 0; k_step < 3000; ++k_step)
     r = spring_history_friction(p, h, dxi, dphi, k, contact(a, 10, 0.3));
   return {r.force, r.torque, r.sticking};
@@ -84,7 +84,7 @@ TEST(SpringFriction, MatchesTheIssueFiguresForHertz) {
 
 TEST(SpringFriction, BelowTheLimitTheSpringsAreHookesLaw) {
   const auto k = mindlin_springs(tangential_stiffness<double>{2e4}, patch_radius<double>{0.01});
-  spring_history<vec2, double> h{{0, 0}, 0, 0};
+  spring_history<vec2, double> h{{0, 0}, 0, {}};
   const vec2 dxi{1e-6, -2e-6};
   for (int step = 1; step <= 10; ++step) {
     const auto r = spring_history_friction(hertz<>(), h, dxi, 1e-3, k, contact(0.01, 10, 0.3));
@@ -98,14 +98,14 @@ TEST(SpringFriction, BelowTheLimitTheSpringsAreHookesLaw) {
 
 TEST(SpringFriction, ASlipRewritesTheSprings) {
   const auto k = mindlin_springs(tangential_stiffness<double>{2e4}, patch_radius<double>{0.01});
-  spring_history<vec2, double> h{{0, 0}, 0, 0};
+  spring_history<vec2, double> h{{0, 0}, 0, {}};
   const auto r =
       spring_history_friction(hertz<>(), h, vec2{1e-3, 0}, 0.5, k, contact(0.01, 10, 0.3));
   ASSERT_FALSE(r.sticking);
   EXPECT_NEAR(h.displacement[0], -r.force[0] / 2e4, 1e-15);
   EXPECT_EQ(h.displacement[1], 0);
   EXPECT_NEAR(h.twist, -r.torque / k.twisting.value, 1e-15);
-  EXPECT_EQ(h.ratio, r.ratio);
+  EXPECT_EQ(h.curve.ratio, r.ratio);
   const auto ft = hertz<>().force_torque(r.ratio);
   EXPECT_NEAR(-r.force[0], 3 * ft.force, 1e-14);
   EXPECT_NEAR(-r.torque, 3 * 0.01 * ft.torque, 1e-16);
@@ -113,25 +113,26 @@ TEST(SpringFriction, ASlipRewritesTheSprings) {
 
 // A slip keeps where it left the curve (history.curve: the ratio, 𝓕 and 𝓣
 // of the result in units of μN and μNa, 𝓕′ there); the next step starts from
-// it, and ends where a start from the ratio alone ends (to rounding), and
-// where a history without it (built with three fields) ends.
+// it, and ends where a start from the ratio alone ends (to rounding).
 TEST(SpringFriction, ASlipKeepsItsCurvePointForTheNextStep) {
   const auto k = mindlin_springs(tangential_stiffness<double>{2e4}, patch_radius<double>{0.01});
   const hertz<> p;
-  spring_history<vec2, double> h{{0, 0}, 0, 0};
+  spring_history<vec2, double> h{{0, 0}, 0, {}};
   EXPECT_EQ(h.curve.ratio, 0);
   EXPECT_TRUE(std::isnan(h.curve.slope));
   auto r = spring_history_friction(p, h, vec2{1e-3, 0}, 0.5, k, contact(0.01, 10, 0.3));
   ASSERT_FALSE(r.sticking);
-  EXPECT_EQ(h.curve.ratio, h.ratio);
+  EXPECT_EQ(h.curve.ratio, r.ratio);
+  EXPECT_EQ(r.curve().ratio, r.ratio);
+  EXPECT_EQ(r.curve().force, h.curve.force);
   EXPECT_NEAR(h.curve.force, -r.force[0] / 3, 1e-15);
   EXPECT_NEAR(h.curve.torque, -r.torque / (3 * 0.01), 1e-15);
-  EXPECT_NEAR(h.curve.slope / p.force_derivative(h.ratio), 1, 1e-9);
+  EXPECT_NEAR(h.curve.slope / p.force_derivative(h.curve.ratio), 1, 1e-9);
   int slips = 0;
   for (int step = 0; step < 20; ++step) {
     // the next step, from the kept point and from the ratio alone
     auto by_ratio = h;
-    by_ratio.curve = {};  // not at the ratio: ignored
+    by_ratio.curve = curve_point<double>{h.curve.ratio};  // the ratio alone
     const vec2 inc{2e-5 * std::cos(step), 1e-5 * std::sin(step)};
     const double twist = 0.02 * std::cos(0.3 * step);
     const auto a = spring_history_friction(p, h, inc, twist, k, contact(0.01, 10, 0.3));
@@ -155,7 +156,7 @@ TEST(SpringFriction, MindlinTwistingStiffness) {
 
 TEST(SpringFriction, BadInputIsADomainErrorAndLeavesTheHistory) {
   const auto k = mindlin_springs(tangential_stiffness<double>{3e4}, patch_radius<double>{0.02});
-  spring_history<vec2, double> h{{1e-6, 0}, 1e-3, 0.5};
+  spring_history<vec2, double> h{{1e-6, 0}, 1e-3, curve_point<double>{0.5}};
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(
       spring_history_friction(uniform_disk<>(), h, vec2{nan, 0}, 0.0, k, contact(0.02, 1, 0.3)),
@@ -170,7 +171,7 @@ TEST(SpringFriction, BadInputIsADomainErrorAndLeavesTheHistory) {
       std::domain_error);
   EXPECT_EQ(h.displacement[0], 1e-6);
   EXPECT_EQ(h.twist, 1e-3);
-  EXPECT_EQ(h.ratio, 0.5);
+  EXPECT_EQ(h.curve.ratio, 0.5);
 }
 
 }  // namespace

@@ -117,7 +117,7 @@ TEST(TrialCap, IsWhatTheSpringHistoryLawCalls) {
   for (int k = 0; k < 500; ++k) {
     const random_trial c = make_trial(rng);
     const auto s = springs(c.kt, c.a);
-    spring_history<vec2, double> history{{0, 0}, 0, 0};
+    spring_history<vec2, double> history{{0, 0}, 0, {}};
     const auto law = spring_history_friction(profile, history, c.trial.displacement, c.trial.twist,
                                              s, contact(c.a, c.n, c.mu));
     const auto cap = cap_trial_state(

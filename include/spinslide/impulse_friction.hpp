@@ -36,13 +36,19 @@
 
 namespace spinslide {
 
-/// The friction impulse of one contact over one step.
+/// \deprecated impulse_friction returns a friction_result (projection_results.hpp):
+/// `force` for `linear`, `torque` for `angular`, and curve() to start the
+/// next step from.  This type converts from it, and goes in the next release.
 template <class Vec2, class Real>
-struct friction_impulse {
-  Vec2 linear;    ///< (P_x, P_y), on the body whose relative motion was given
-  Real angular;   ///< L, about the normal
+struct [[deprecated("spinslide: impulse_friction returns friction_result {force, torque, "
+                    "sticking, ratio, curve()}")]] friction_impulse {
+  Vec2 linear;    ///< (P_x, P_y)
+  Real angular;   ///< L
   bool sticking;  ///< true: the impulse stops the contact exactly
-  Real ratio;     ///< ε = |v⁺|/(a|ω⁺|) after the step (NaN if sticking)
+  Real ratio;     ///< ε after the step (NaN if sticking)
+  /// The old names of a friction_result's values.
+  friction_impulse(const friction_result<Vec2, Real>& r)  // NOLINT(google-explicit-constructor)
+      : linear(r.force), angular(r.torque), sticking(r.sticking), ratio(r.ratio) {}
 };
 
 /// The friction impulse for one contact over one step (see the file's
@@ -51,15 +57,18 @@ struct friction_impulse {
 /// relative angular velocity about the normal; `inverse_mass`: W over
 /// (v_x, v_y, ω), in the same axes; `contact`: a, Λ and μ.  Components
 /// finite, a > 0, Λ ≥ 0 and μ ≥ 0, all of the profile's value_type;
-/// otherwise a domain error.  `start`: the contact's ratio at the last step,
-/// where known (0: none); it only speeds the search.  No allocation: two 3×3
-/// factorizations and, when it slips, a few evaluations of the profile.
+/// otherwise a domain error.  `start`: where the contact's last step left
+/// the limit curve (the last result's curve(), or `curve_point<Real>{ε}` for
+/// a ratio alone; ratio ≥ 0, else a domain error; `{}`: none); it only
+/// speeds the search.  The result's `force` and `torque` are the impulse
+/// (P_x, P_y) and L.  No allocation: two 3×3 factorizations and, when it
+/// slips, a few evaluations of the profile.
 template <class Profile, class Vec2>
-friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
+friction_result<Vec2, typename Profile::value_type> impulse_friction(
     const Profile& profile, const Vec2& velocity, typename Profile::value_type spin,
     const planar_metric<typename Profile::value_type>& inverse_mass,
     const impulse_contact<typename Profile::value_type>& contact,
-    starting_ratio<typename Profile::value_type> start = {0}) {
+    const curve_point<typename Profile::value_type>& start = {}) {
   using Real = typename Profile::value_type;
   detail::require_smooth_curve<Profile, Real>();
   static_assert(detail::is_vector<Vec2, 2>(),
@@ -78,14 +87,15 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
   const Real w = checked(function, "spin", spin, argument_rule::finite, pol);
   const auto patch = detail::checked_patch(function, contact, pol);
   const Real a = patch.radius, n = patch.normal, mu = patch.friction;
-  const Real s0 = checked(function, "start", start.value, argument_rule::non_negative, pol);
-  friction_impulse<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN()};
+  const Real s0 = checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
+  friction_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
+                                   start};
   // Every output NaN where a check reported an error through a policy that
   // does not throw.
   auto reported = [&out](Real bad) {
-    detail::set<0>(out.linear, bad);
-    detail::set<1>(out.linear, bad);
-    out.angular = out.ratio = bad;
+    detail::set<0>(out.force, bad);
+    detail::set<1>(out.force, bad);
+    out.torque = out.ratio = bad;
     return out;
   };
   if (detail::any_reported(vx, vy, w, a, n, mu, s0)) return reported(out.ratio);
@@ -133,14 +143,34 @@ friction_impulse<Vec2, typename Profile::value_type> impulse_friction(
   // (Divided by a, then by the load: μΛa itself may be subnormal.)
   const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / a / load};
   const wrench_projection<Real> r =
-      detail::metric_projector<Profile>(profile, target, metric, inverse)(s0);
+      detail::metric_projector<Profile>(profile, target, metric, inverse)(s0, &start);
   out.sticking = r.sticking;
   out.ratio = r.ratio;
-  detail::set<0>(out.linear, r.sticking ? stop[0] : Real(load * r.point.force_x));
-  detail::set<1>(out.linear, r.sticking ? stop[1] : Real(load * r.point.force_y));
-  out.angular = r.sticking ? stop[2] : detail::product(load, a, r.point.torque);
+  if (!r.sticking) out.point = r.curve();
+  detail::set<0>(out.force, r.sticking ? stop[0] : Real(load * r.point.force_x));
+  detail::set<1>(out.force, r.sticking ? stop[1] : Real(load * r.point.force_y));
+  out.torque = r.sticking ? stop[2] : detail::product(load, a, r.point.torque);
   return out;
 }
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+/// \deprecated As above from `curve_point<Real>{start.value}`; goes in the next release.
+template <class Profile, class Vec2>
+[[deprecated("spinslide: pass curve_point<Real>{ratio}")]] friction_result<
+    Vec2, typename Profile::value_type>
+impulse_friction(const Profile& profile, const Vec2& velocity, typename Profile::value_type spin,
+                 const planar_metric<typename Profile::value_type>& inverse_mass,
+                 const impulse_contact<typename Profile::value_type>& contact,
+                 starting_ratio<typename Profile::value_type> start) {
+  return impulse_friction(profile, velocity, spin, inverse_mass, contact,
+                          curve_point<typename Profile::value_type>(start));
+}
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
 
 }  // namespace spinslide
 

@@ -31,14 +31,6 @@
 
 namespace spinslide {
 
-/// A ratio ε to start the projection's search from, typically the last
-/// step's (from the contact's history).  Its own type, so that it cannot be
-/// passed where a force, a torque or a weight is meant.
-template <class Real>
-struct starting_ratio {
-  Real value;  ///< ε ≥ 0 (0 or +∞: no guess)
-};
-
 namespace detail {
 
 template <class P>
@@ -70,7 +62,7 @@ limit_projection<Real> project_checked(const Profile& profile, Real force, Real 
   const Real t = checked(function, "torque", torque, argument_rule::finite_non_negative, pol);
   const Real w =
       checked(function, "torque_weight", torque_weight, argument_rule::finite_positive, pol);
-  const Real s = checked(function, "starting_ratio", start, argument_rule::non_negative, pol);
+  const Real s = checked(function, "start.ratio", start, argument_rule::non_negative, pol);
   if (any_reported(f, t, w, s)) {
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     return {nan, nan, false, nan};
@@ -104,7 +96,7 @@ wrench_projection<Real> project_wrench_checked(const Profile& profile,
       checked(function, "point.force_x", point.force_x, argument_rule::finite, pol),
       checked(function, "point.force_y", point.force_y, argument_rule::finite, pol),
       checked(function, "point.torque", point.torque, argument_rule::finite, pol)};
-  const Real s = checked(function, "starting_ratio", start, argument_rule::non_negative, pol);
+  const Real s = checked(function, "start.ratio", start, argument_rule::non_negative, pol);
   if (any_reported(z[0], z[1], z[2], s)) {
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     return {{nan, nan, nan}, false, nan};
@@ -133,25 +125,15 @@ limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, 
                                  "spinslide::project_to_limit_set<%1%>(profile, %1%, %1%, %1%)");
 }
 
-/// As above, searching from `start` (the last step's ratio, say): where the
-/// ratio moved little, one or two evaluations of the profile.  The result
-/// does not depend on `start` (to rounding).  start.value ≥ 0, else a
-/// domain error.
-template <class Profile, class Real>
-limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, Real torque,
-                                            Real torque_weight, starting_ratio<Real> start) {
-  return detail::project_checked(
-      profile, force, torque, torque_weight, start.value,
-      "spinslide::project_to_limit_set<%1%>(profile, %1%, %1%, %1%, starting_ratio)");
-}
-
 /// As above, searching from where the contact's last projection left the
-/// curve (its result's curve(), from a slip: ratio ≥ 0, else a domain
-/// error): the search takes its first step from that point's 𝓕, 𝓣, 𝓕′ and
-/// 𝓕″ without evaluating the profile, one evaluation fewer than from its
-/// ratio alone.  The point must be one that a projection with the same
-/// profile returned; the result does not depend on it (to rounding): no
-/// answer is taken from its values, only a step.
+/// curve (its result's curve(): ratio ≥ 0, else a domain error): where the
+/// ratio moved little, one or two evaluations of the profile.  From a point
+/// with its values (a slip's curve()) the search takes its first step from
+/// its 𝓕, 𝓣, 𝓕′ and 𝓕″ without evaluating the profile, one evaluation fewer
+/// than from `curve_point<Real>{ε}`, a ratio alone (the last step's, say).
+/// The values must be ones that a projection with the same profile
+/// returned; the result does not depend on them (to rounding): no answer is
+/// taken from them, only a step.
 template <class Profile, class Real>
 limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, Real torque,
                                             Real torque_weight, const curve_point<Real>& start) {
@@ -179,22 +161,11 @@ wrench_projection<Real> project_to_limit_set(const Profile& profile,
       "spinslide::project_to_limit_set<%1%>(profile, tangent_wrench, planar_metric)");
 }
 
-/// As above, searching from `start` (the last step's ratio).
-template <class Profile, class Real>
-wrench_projection<Real> project_to_limit_set(const Profile& profile,
-                                             const tangent_wrench<Real>& point,
-                                             const planar_metric<Real>& metric,
-                                             starting_ratio<Real> start) {
-  return detail::project_wrench_checked(
-      profile, point, metric, start.value,
-      "spinslide::project_to_limit_set<%1%>(profile, tangent_wrench, planar_metric, "
-      "starting_ratio)");
-}
-
 /// As above, searching from where the contact's last projection left the
-/// curve (its result's curve(), from a slip: ratio ≥ 0, else a domain
-/// error): one evaluation of the profile fewer than from its ratio alone.
-/// The result does not depend on the point (to rounding): only the start.
+/// curve (its result's curve(): ratio ≥ 0, else a domain error); from a
+/// slip's point with its values, one evaluation of the profile fewer than
+/// from `curve_point<Real>{ε}`, a ratio alone.  The result does not depend
+/// on the point (to rounding): only the start.
 template <class Profile, class Real>
 wrench_projection<Real> project_to_limit_set(const Profile& profile,
                                              const tangent_wrench<Real>& point,
@@ -205,6 +176,29 @@ wrench_projection<Real> project_to_limit_set(const Profile& profile,
       "spinslide::project_to_limit_set<%1%>(profile, tangent_wrench, planar_metric, curve_point)",
       &start);
 }
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+/// \deprecated As above from `curve_point<Real>{start.value}`; goes in the next release.
+template <class Profile, class Real>
+[[deprecated("spinslide: pass curve_point<Real>{ratio}")]] limit_projection<Real>
+project_to_limit_set(const Profile& profile, Real force, Real torque, Real torque_weight,
+                     starting_ratio<Real> start) {
+  return project_to_limit_set(profile, force, torque, torque_weight, curve_point<Real>(start));
+}
+
+/// \deprecated As above from `curve_point<Real>{start.value}`; goes in the next release.
+template <class Profile, class Real>
+[[deprecated("spinslide: pass curve_point<Real>{ratio}")]] wrench_projection<Real>
+project_to_limit_set(const Profile& profile, const tangent_wrench<Real>& point,
+                     const planar_metric<Real>& metric, starting_ratio<Real> start) {
+  return project_to_limit_set(profile, point, metric, curve_point<Real>(start));
+}
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
 
 }  // namespace spinslide
 

@@ -22,15 +22,21 @@ namespace spinslide {
 /// A point of a profile's limit curve as a projection left it
 /// (limit_projection::curve()): the ratio ε and 𝓕, 𝓣, 𝓕′ and 𝓕″ there.
 /// Passed to the next projection of the same contact with the same profile
-/// (project_to_limit_set, limit_set.hpp), it lets that search take its first
-/// step without evaluating the profile.
+/// (project_to_limit_set, limit_set.hpp; impulse_friction; cap_trial_state),
+/// it lets that search take its first step without evaluating the profile.
+/// The one warm start of every projection and law: `curve_point<Real>{ε}`
+/// (the values unknown) starts from a ratio alone, and `{}` from nothing.
 template <class Real>
 struct curve_point {
-  Real ratio;      ///< ε
-  Real force;      ///< 𝓕(ε)
-  Real torque;     ///< 𝓣(ε)
-  Real slope;      ///< 𝓕′(ε) (NaN: unknown, and the point serves as a ratio only)
-  Real curvature;  ///< 𝓕″(ε) (NaN: unknown, and the first step is Newton's)
+  Real ratio = 0;  ///< ε (0 or +∞: no start)
+  /// 𝓕(ε) (NaN: unknown, and the point serves as a ratio only)
+  Real force = std::numeric_limits<Real>::quiet_NaN();
+  /// 𝓣(ε) (NaN: unknown, and the point serves as a ratio only)
+  Real torque = std::numeric_limits<Real>::quiet_NaN();
+  /// 𝓕′(ε) (NaN: unknown, and the point serves as a ratio only)
+  Real slope = std::numeric_limits<Real>::quiet_NaN();
+  /// 𝓕″(ε) (NaN: unknown, and the first step is Newton's)
+  Real curvature = std::numeric_limits<Real>::quiet_NaN();
 };
 
 /// The point of a profile's limit set nearest to a given (force, torque)
@@ -66,6 +72,32 @@ struct wrench_projection {
     if (sticking) return {nan, nan, nan, nan, nan};
     return {ratio, Real(hypot(point.force_x, point.force_y)), Real(fabs(point.torque)), nan, nan};
   }
+};
+
+/// The friction of one contact over one step, as every contact law returns
+/// it (impulse_friction, spring_history_friction): the same names as the
+/// projections' results.
+template <class Vec2, class Real>
+struct friction_result {
+  /// F (impulse_friction: the linear impulse P), on the body whose relative
+  /// motion was given, in the tangent plane's axes
+  Vec2 force;
+  Real torque;    ///< T about the normal (impulse_friction: the angular impulse L)
+  bool sticking;  ///< true: the contact sticks exactly (the trial state is kept)
+  Real ratio;     ///< ε of the slip (NaN if sticking)
+  /// Where the slip left the limit curve (the given start if sticking).
+  curve_point<Real> point;
+  /// Where this step left the limit curve, to start the contact's next one from.
+  curve_point<Real> curve() const { return point; }
+};
+
+/// \deprecated The warm start is a curve_point (`curve_point<Real>{ε}` for a
+/// ratio alone); this name goes in the next release.
+template <class Real>
+struct [[deprecated("spinslide: use curve_point<Real>{ratio}")]] starting_ratio {
+  Real value;  ///< ε ≥ 0 (0 or +∞: no guess)
+  /// The ratio-only curve point curve_point<Real>{value}.
+  operator curve_point<Real>() const { return curve_point<Real>{value}; }
 };
 
 }  // namespace spinslide

@@ -37,22 +37,26 @@ template <class Vec2, class Real>
 struct spring_history {
   Vec2 displacement;  ///< the tangential spring's stretch ξ (the force is −k_t ξ)
   Real twist;         ///< the twisting spring's angle φ (the torque is −k_θ φ)
-  Real ratio;         ///< ε at the last slipping step, to start the next search (0: none)
-  /// Where the last slip left the limit curve (limit_projection::curve()):
-  /// the next search takes its first step from its 𝓕, 𝓣, 𝓕′ and 𝓕″ without
-  /// evaluating the profile, if its ratio is `ratio` (else `ratio` alone
-  /// starts it).  Written by every slip; a history built without it works.
-  curve_point<Real> curve{Real(0), Real(0), Real(0), std::numeric_limits<Real>::quiet_NaN(),
-                          std::numeric_limits<Real>::quiet_NaN()};
+  /// Where the last slip left the limit curve (its ratio ε, 0: none yet):
+  /// the next search takes its first step from there, without evaluating
+  /// the profile where the point has its values (a slip writes them), from
+  /// the ratio alone where it has only that (`curve_point<Real>{ε}`).
+  curve_point<Real> curve{};
 };
 
-/// The friction of one spring-history contact over one step.
+/// \deprecated spring_history_friction returns a friction_result
+/// (projection_results.hpp), with the same first four names and curve();
+/// this type converts from it, and goes in the next release.
 template <class Vec2, class Real>
-struct spring_friction {
-  Vec2 force;     ///< F, on the body whose relative motion the increments describe
+struct [[deprecated("spinslide: spring_history_friction returns friction_result")]]
+spring_friction {
+  Vec2 force;     ///< F
   Real torque;    ///< T about the normal
   bool sticking;  ///< true: the springs' trial state was admissible and is kept
   Real ratio;     ///< ε of the capped state (NaN if sticking)
+  /// The old names of a friction_result's values.
+  spring_friction(const friction_result<Vec2, Real>& r)  // NOLINT(google-explicit-constructor)
+      : force(r.force), torque(r.torque), sticking(r.sticking), ratio(r.ratio) {}
 };
 
 /// The springs of a Hertz–Mindlin contact of radius a: the tangential
@@ -72,10 +76,11 @@ spring_stiffness<Real> mindlin_springs(tangential_stiffness<Real> kt, patch_radi
 /// Every input finite, the stiffnesses and a > 0, N and μ ≥ 0, all of the
 /// profile's value_type; otherwise a domain error (and the history is left
 /// as it was).  No allocation; when it slips, a few evaluations of the
-/// profile (fewer from the history's ratio, and one fewer again from its
-/// curve point).
+/// profile (fewer from the history's curve point, and one fewer again where
+/// the point has its values).  The result's curve() is the history's new
+/// point.
 template <class Profile, class Vec2>
-spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
+friction_result<Vec2, typename Profile::value_type> spring_history_friction(
     const Profile& profile, spring_history<Vec2, typename Profile::value_type>& history,
     const Vec2& displacement_increment, typename Profile::value_type twist_increment,
     const spring_stiffness<typename Profile::value_type>& springs,
@@ -110,9 +115,10 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
   const Real kw = checked(function, "springs.twisting", springs.twisting.value,
                           argument_rule::finite_positive, pol);
   const auto patch = detail::checked_patch(function, contact, pol);
-  const Real start =
-      checked(function, "history.ratio", history.ratio, argument_rule::non_negative, pol);
-  spring_friction<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN()};
+  const Real start = checked(function, "history.curve.ratio", history.curve.ratio,
+                            argument_rule::non_negative, pol);
+  friction_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
+                                   history.curve};
   // Every output NaN (and the history as it was) where a check reported an
   // error through a policy that does not throw.
   auto reported = [&out](Real bad) {
@@ -123,23 +129,15 @@ spring_friction<Vec2, typename Profile::value_type> spring_history_friction(
   };
   if (detail::any_reported(x, y, phi, kt, kw, patch.radius, patch.normal, patch.friction, start))
     return reported(out.ratio);
-  // From the kept curve point if it is at the ratio, else from the ratio
-  // alone.
-  const Real nan = std::numeric_limits<Real>::quiet_NaN();
-  const curve_point<Real> from =
-      history.curve.ratio == start ? history.curve : curve_point<Real>{start, nan, nan, nan, nan};
   const capped_friction<Vec2, Real> cap = detail::cap_checked<2, Vec2>(
       profile, detail::checked_trial<Real>{{x, y, Real(0)}, {}, phi, Real(0)},
       spring_stiffness<Real>{tangential_stiffness<Real>{kt}, twisting_stiffness<Real>{kw}}, patch,
-      from, function);
+      history.curve, function);
   if ((boost::math::isnan)(cap.twist)) return reported(cap.twist);
-  out = {cap.force, cap.torque, cap.sticking, cap.ratio};
+  out = {cap.force, cap.torque, cap.sticking, cap.ratio, cap.point};
   history.displacement = cap.displacement;
   history.twist = cap.twist;
-  if (!cap.sticking && !(boost::math::isnan)(cap.ratio)) {
-    history.ratio = cap.ratio;
-    history.curve = cap.point;
-  }
+  if (!cap.sticking && !(boost::math::isnan)(cap.ratio)) history.curve = cap.point;
   return out;
 }
 

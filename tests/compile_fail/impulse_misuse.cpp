@@ -25,23 +25,23 @@ int main() {
   const impulse_contact<double> c{patch_radius<double>{0.06}, normal_impulse<double>{1e-3},
                                   friction_coefficient<double>{0.2}};
   const impulse_contact c17{patch_radius{0.06}, normal_impulse{1e-3}, friction_coefficient{0.2}};
-  return impulse_friction(disk, v, qvel[5], w, c).angular < 0 &&
-                 impulse_friction(disk, v, qvel[5], w, c17).angular < 0
+  return impulse_friction(disk, v, qvel[5], w, c).torque < 0 &&
+                 impulse_friction(disk, v, qvel[5], w, c17).torque < 0
              ? 0
              : 1;
 #elif MISUSE == 1
   // The normal impulse where the radius goes, and the radius where it goes.
   const impulse_contact<double> c{normal_impulse<double>{1e-3}, patch_radius<double>{0.06},
                                   friction_coefficient<double>{0.2}};
-  return impulse_friction(disk, v, qvel[5], w, c).angular < 0 ? 0 : 1;
+  return impulse_friction(disk, v, qvel[5], w, c).torque < 0 ? 0 : 1;
 #elif MISUSE == 2
   // Plain numbers for the named inputs.
   const impulse_contact<double> c{0.06, 1e-3, 0.2};
-  return impulse_friction(disk, v, qvel[5], w, c).angular < 0 ? 0 : 1;
+  return impulse_friction(disk, v, qvel[5], w, c).torque < 0 ? 0 : 1;
 #elif MISUSE == 3
   // A raw pointer for the velocity (MuJoCo's d->qvel).
   const impulse_contact<double> c{patch_radius<double>{0.06}, normal_impulse<double>{1e-3},
                                   friction_coefficient<double>{0.2}};
-  return impulse_friction(disk, qvel, qvel[5], w, c).angular < 0 ? 0 : 1;
+  return impulse_friction(disk, qvel, qvel[5], w, c).torque < 0 ? 0 : 1;
 #endif
 }

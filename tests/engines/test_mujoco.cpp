@@ -108,9 +108,9 @@ TEST(PairFriction, StickingStopsTheContactExactly) {
   const spinslide::planar_metric<double> w({{{2, 0, 0}, {0, 2, 0}, {0, 0, 50}}});
   const auto p = f.impulse({0.01, 0.0}, 0.01, w, spinslide::normal_impulse<double>{0.1}, 0.0);
   EXPECT_TRUE(p.sticking);
-  EXPECT_DOUBLE_EQ(p.linear[0], -0.005);
-  EXPECT_EQ(p.linear[1], 0.0);
-  EXPECT_DOUBLE_EQ(p.angular, -0.0002);
+  EXPECT_DOUBLE_EQ(p.force[0], -0.005);
+  EXPECT_EQ(p.force[1], 0.0);
+  EXPECT_DOUBLE_EQ(p.torque, -0.0002);
 }
 
 TEST(PairFriction, SlidingFollowsTheProfile) {
@@ -124,13 +124,13 @@ TEST(PairFriction, SlidingFollowsTheProfile) {
   const auto pd = disk.impulse({1.0, 0.0}, 0.0, w, spinslide::normal_impulse<double>{1.0}, 0.0);
   const auto ps = sphere.impulse({1.0, 0.0}, 0.0, w, spinslide::normal_impulse<double>{1.0}, 0.0);
   EXPECT_FALSE(pd.sticking);
-  EXPECT_NEAR(pd.linear[0], -0.2, 1e-12);
-  EXPECT_NEAR(ps.linear[0], -0.2, 1e-12);
+  EXPECT_NEAR(pd.force[0], -0.2, 1e-12);
+  EXPECT_NEAR(ps.force[0], -0.2, 1e-12);
   // Spinning in place: |L| = μΛ a T(0): 2/3 for the disk, 3π/16 for Hertz.
   const auto qd = disk.impulse({0.0, 0.0}, 10.0, w, spinslide::normal_impulse<double>{1.0}, 0.0);
   const auto qs = sphere.impulse({0.0, 0.0}, 10.0, w, spinslide::normal_impulse<double>{1.0}, 0.0);
-  EXPECT_NEAR(qd.angular, -0.2 * 0.06 * 2.0 / 3.0, 1e-14);
-  EXPECT_NEAR(qs.angular, -0.2 * 0.06 * 3 * pi / 16, 1e-14);
+  EXPECT_NEAR(qd.torque, -0.2 * 0.06 * 2.0 / 3.0, 1e-14);
+  EXPECT_NEAR(qs.torque, -0.2 * 0.06 * 3 * pi / 16, 1e-14);
 }
 
 TEST(MujocoAdapter, RefusesMisuse) {

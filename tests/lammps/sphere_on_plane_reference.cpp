@@ -116,7 +116,7 @@ void cap_friction(const Profile& profile, double mu_load, double a, const spring
   const double f = fmag / mu_load;
   const double t = std::fabs(torque) / (mu_load * a);
   const spinslide::limit_projection<double> p = spinslide::project_to_limit_set(
-      profile, f, t, a * a * k.kt / k.kw, spinslide::starting_ratio<double>{h.ratio});
+      profile, f, t, a * a * k.kt / k.kw, spinslide::curve_point<double>{h.ratio});
   if (p.sticking) return;
   if (!std::isnan(p.ratio)) h.ratio = p.ratio;
   const double scale = fmag > 0.0 ? p.force * mu_load / fmag : 0.0;

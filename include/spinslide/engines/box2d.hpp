@@ -90,8 +90,8 @@ class table_friction {
                                       normal_impulse<double>{m * gravity_ * dt}, 0.0);
     e.sticking = p.sticking;
     b.ApplyLinearImpulseToCenter(
-        b2Vec2(static_cast<float>(p.linear[0]), static_cast<float>(p.linear[1])), true);
-    b.ApplyAngularImpulse(static_cast<float>(p.angular), true);
+        b2Vec2(static_cast<float>(p.force[0]), static_cast<float>(p.force[1])), true);
+    b.ApplyAngularImpulse(static_cast<float>(p.torque), true);
   }
 
   double gravity_;

@@ -253,8 +253,8 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
                                   static_cast<double>(slip.dot(t[1]))};
     const auto f = p.friction.impulse(v, spin, metric, normal_impulse<double>{s.impulse}, s.depth);
     const btVector3 linear =
-        t[0] * static_cast<btScalar>(f.linear[0]) + t[1] * static_cast<btScalar>(f.linear[1]);
-    const btVector3 angular = t[2] * static_cast<btScalar>(f.angular);
+        t[0] * static_cast<btScalar>(f.force[0]) + t[1] * static_cast<btScalar>(f.force[1]);
+    const btVector3 angular = t[2] * static_cast<btScalar>(f.torque);
     apply(a, linear, angular, ra);
     apply(b, -linear, -angular, rb);
     p.last = pair_report{true,

@@ -275,7 +275,7 @@ class coupled_friction {
                                 normal_impulse<double>{r.normal_force * h}, r.penetration);
       r.sticking = p.sticking;
       r.ratio = p.ratio;
-      pair.impulse = {p.linear[0], p.linear[1], p.angular};
+      pair.impulse = {p.force[0], p.force[1], p.torque};
       for (std::size_t row = 0; row < 3; ++row)
         for (std::size_t j = 0; j < nv; ++j)
           generalized_[j] += pair.rows[row * nv + j] * pair.impulse[row] / h;

@@ -95,8 +95,9 @@ class pair_friction {
   /// velocity (tangent-plane axes) and spin about the normal before friction,
   /// `inverse_mass` the pair's effective inverse mass over them, `normal` the
   /// normal impulse of the step and `penetration` the depth δ for the radius.
-  /// Starts from the pair's last ratio and keeps the new one.
-  friction_impulse<std::array<double, 2>, double> impulse(const std::array<double, 2>& velocity,
+  /// Starts from where the pair's last slip left the limit curve and keeps
+  /// the new point.
+  friction_result<std::array<double, 2>, double> impulse(const std::array<double, 2>& velocity,
                                                           double spin,
                                                           const planar_metric<double>& inverse_mass,
                                                           normal_impulse<double> normal,
@@ -106,15 +107,15 @@ class pair_friction {
     const auto out = std::visit(
         [&](const auto& profile) {
           return impulse_friction(profile, velocity, spin, inverse_mass, contact,
-                                  starting_ratio<double>{last_ratio_});
+                                  last_);
         },
         profile_);
-    last_ratio_ = out.sticking ? 0.0 : out.ratio;
+    last_ = out.sticking ? curve_point<double>{} : out.curve();
     return out;
   }
 
-  /// Drops the kept ratio (the pair lost contact, or stuck).
-  void forget() { last_ratio_ = 0; }
+  /// Drops the kept curve point (the pair lost contact, or stuck).
+  void forget() { last_ = {}; }
 
  private:
   using rule = detail::argument_rule;
@@ -127,7 +128,7 @@ class pair_friction {
   double fixed_radius_;          // a, or the least a of a hertz_radius
   double effective_radius_ = 0;  // R* (0: a fixed radius)
   double friction_;
-  double last_ratio_ = 0;
+  curve_point<double> last_;  // where the last slip left the curve ({}: none)
 };
 
 }  // namespace engines
