@@ -20,6 +20,7 @@
 #ifndef SPINSLIDE_FUZZ_HPP
 #define SPINSLIDE_FUZZ_HPP
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -174,6 +175,17 @@ void check_finite(Real x, const char* call, const char* what) {
     std::snprintf(buf, sizeof buf, "%.21Lg", static_cast<long double>(x));
     fail(call, (reason + buf).c_str());
   }
+}
+
+/// The unit vector along (x, y), (1, 0) for (0, 0): scaled first, since the
+/// hypot of two subnormals rounds to a subnormal and the quotients would not
+/// be a unit vector ((-5e-324, -5e-324) gave (-0.5, -0.5): fuzz_impulse).
+template <class Real>
+std::array<Real, 2> unit_direction(Real x, Real y) {
+  const Real big = std::fmax(std::fabs(x), std::fabs(y));
+  if (!(big > 0)) return {Real(1), Real(0)};
+  const Real ux = x / big, uy = y / big, length = std::hypot(ux, uy);
+  return {ux / length, uy / length};
 }
 
 /// Whether the arguments are valid, invalid, or may be either.

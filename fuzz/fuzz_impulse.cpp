@@ -132,8 +132,7 @@ void check_projection(const P& p, const matrix& m, const std::array<double, 3>& 
   check(std::fabs(std::fabs(r.point.torque) - c.torque) <= 1e-12 * (1 + c.torque), call,
         "torque off the curve");
   // No farther than the curve's ends along z's direction and torque sign.
-  const double zf = std::hypot(z[0], z[1]);
-  const double dx = zf > 0 ? z[0] / zf : 1, dy = zf > 0 ? z[1] / zf : 0;
+  const auto [dx, dy] = unit_direction(z[0], z[1]);
   const double top = std::copysign(p.mean_radius(), z[2]);
   const std::array<double, 3> here{r.point.force_x, r.point.force_y, r.point.torque};
   const double d = distance(m, here, z);

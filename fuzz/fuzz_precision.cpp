@@ -94,12 +94,7 @@ void fuzz_projection(fuzz_input& in, const P& p) {
       check(std::fabs(f - c.force) <= 8 * eps * (1 + c.force), call, "force off the curve");
       check(std::fabs(std::fabs(r.point.torque) - c.torque) <= 8 * eps * (1 + c.torque), call,
             "torque off the curve");
-      // z's force direction, scaled first: hypot of two subnormals rounds
-      // to a subnormal, and their quotients would not be a unit vector.
-      const Real zbig = std::fmax(std::fabs(z[0]), std::fabs(z[1]));
-      const Real ux = zbig > 0 ? z[0] / zbig : Real(1), uy = zbig > 0 ? z[1] / zbig : Real(0);
-      const Real zf = std::hypot(ux, uy);
-      const Real dx = ux / zf, dy = uy / zf;
+      const auto [dx, dy] = unit_direction(z[0], z[1]);
       const Real top = std::copysign(p.mean_radius(), z[2]);
       const std::array<Real, 3> here{r.point.force_x, r.point.force_y, r.point.torque};
       const Real d = distance(metric.entries(), here, z);

@@ -40,8 +40,9 @@ namespace spinslide {
 /// `force` for `linear`, `torque` for `angular`, and curve() to start the
 /// next step from.  This type converts from it, and goes in the next release.
 template <class Vec2, class Real>
-struct [[deprecated("spinslide: impulse_friction returns friction_result {force, torque, "
-                    "sticking, ratio, curve()}")]] friction_impulse {
+struct [[deprecated(
+    "spinslide: impulse_friction returns friction_result {force, torque, "
+    "sticking, ratio, curve()}")]] friction_impulse {
   Vec2 linear;    ///< (P_x, P_y)
   Real angular;   ///< L
   bool sticking;  ///< true: the impulse stops the contact exactly
@@ -89,7 +90,7 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
   const Real a = patch.radius, n = patch.normal, mu = patch.friction;
   const Real s0 = checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
   friction_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
-                                   start};
+                                  start};
   // Every output NaN where a check reported an error through a policy that
   // does not throw.
   auto reported = [&out](Real bad) {
@@ -116,13 +117,15 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
     if (!out.sticking) out.ratio = std::hypot(vx, vy) / (a * std::fabs(w));
     return out;
   }
-  const Real scale[3] = {1, 1, a};
-  detail::matrix3<Real> metric{}, inverse{};
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) {
-      metric[i][j] = scale[i] * inverse_mass.entries()[i][j] * scale[j];
-      inverse[i][j] = inverse_mass.inverse()[i][j] / (scale[i] * scale[j]);
-    }
+  auto stuck = [&out, &stop]() {
+    out.sticking = true;
+    detail::set<0>(out.force, stop[0]);
+    detail::set<1>(out.force, stop[1]);
+    out.torque = stop[2];
+    return out;
+  };
+  // (Divided by a, then by the load: μΛa itself may be subnormal.)
+  const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / a / load};
   // SWS is W in the limit set's units: with a patch radius far from W's own
   // length scale (a² W_ωω against W_vv) it can be too ill-conditioned to
   // project in; a domain error says so.
@@ -133,6 +136,20 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
   const bool surely = inverse_mass.condition_bound() * spread * spread *
                           sqrt(std::numeric_limits<Real>::epsilon()) <=
                       1;
+  // Sticking is decided on z's magnitudes (L₃ = {(|f|, |t|) ∈ L}); where
+  // they lie in L's inner triangle, before the metric is built (the
+  // projection's own first test).
+  using std::fabs;
+  if (surely && detail::in_sticking_triangle(target[0], target[1], Real(fabs(target[2])),
+                                             Real(profile.mean_radius())))
+    return stuck();
+  const Real scale[3] = {1, 1, a};
+  detail::matrix3<Real> metric{}, inverse{};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) {
+      metric[i][j] = scale[i] * inverse_mass.entries()[i][j] * scale[j];
+      inverse[i][j] = inverse_mass.inverse()[i][j] / (scale[i] * scale[j]);
+    }
   if (!surely && !detail::well_conditioned(metric, inverse)) {
     return reported(detail::raise_argument_error(
         function, "contact.radius",
@@ -140,16 +157,14 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
         "has a condition number within 1/sqrt(epsilon) (6.7e7 in double)",
         a, pol));
   }
-  // (Divided by a, then by the load: μΛa itself may be subnormal.)
-  const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / a / load};
   const wrench_projection<Real> r =
       detail::metric_projector<Profile>(profile, target, metric, inverse)(s0, &start);
-  out.sticking = r.sticking;
+  if (r.sticking) return stuck();
   out.ratio = r.ratio;
-  if (!r.sticking) out.point = r.curve();
-  detail::set<0>(out.force, r.sticking ? stop[0] : Real(load * r.point.force_x));
-  detail::set<1>(out.force, r.sticking ? stop[1] : Real(load * r.point.force_y));
-  out.torque = r.sticking ? stop[2] : detail::product(load, a, r.point.torque);
+  out.point = r.curve();
+  detail::set<0>(out.force, Real(load * r.point.force_x));
+  detail::set<1>(out.force, Real(load * r.point.force_y));
+  out.torque = detail::product(load, a, r.point.torque);
   return out;
 }
 

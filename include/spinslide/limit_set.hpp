@@ -26,6 +26,8 @@
 #include <spinslide/profile_concept.hpp>
 #include <spinslide/projection_results.hpp>
 
+#include <boost/math/special_functions/fpclassify.hpp>
+
 #include <limits>
 #include <type_traits>
 
@@ -137,9 +139,11 @@ limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, 
 template <class Profile, class Real>
 limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, Real torque,
                                             Real torque_weight, const curve_point<Real>& start) {
+  // (A point without values is a ratio alone: no first step from it.)
   return detail::project_checked(
       profile, force, torque, torque_weight, start.ratio,
-      "spinslide::project_to_limit_set<%1%>(profile, %1%, %1%, %1%, curve_point)", &start);
+      "spinslide::project_to_limit_set<%1%>(profile, %1%, %1%, %1%, curve_point)",
+      (boost::math::isnan)(start.force) ? nullptr : &start);
 }
 
 /// The point of the 3-D limit set L₃ = {(f_x, f_y, t) : (|f|, |t|) ∈ L} nearest

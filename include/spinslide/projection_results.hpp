@@ -52,8 +52,12 @@ struct limit_projection {
   Real slope = std::numeric_limits<Real>::quiet_NaN();
   /// 𝓕″ at `ratio`, where the projection's last step was Halley's (else NaN).
   Real curvature = std::numeric_limits<Real>::quiet_NaN();
-  /// Where this projection left the curve, to start the contact's next one from.
-  curve_point<Real> curve() const { return {ratio, force, torque, slope, curvature}; }
+  /// Where this projection left the curve, to start the contact's next one
+  /// from; `{}` (no start) if sticking, so that it can always be passed on.
+  curve_point<Real> curve() const {
+    if (sticking) return {};
+    return {ratio, force, torque, slope, curvature};
+  }
 };
 
 /// The point of a profile's limit set nearest to a tangent wrench in a
@@ -64,13 +68,13 @@ struct wrench_projection {
   bool sticking;               ///< true if the given wrench lies in L₃ (then returned unchanged)
   Real ratio;                  ///< ε of the curve point (NaN if sticking)
   /// Where this projection left the curve (𝓕 = |point's force|, 𝓣 = |its
-  /// torque|; 𝓕′ and 𝓕″ unknown), to start the contact's next one from.
+  /// torque|; 𝓕′ and 𝓕″ unknown), to start the contact's next one from;
+  /// `{}` (no start) if sticking, so that it can always be passed on.
   curve_point<Real> curve() const {
     using std::fabs;
     using std::hypot;
-    const Real nan = std::numeric_limits<Real>::quiet_NaN();
-    if (sticking) return {nan, nan, nan, nan, nan};
-    return {ratio, Real(hypot(point.force_x, point.force_y)), Real(fabs(point.torque)), nan, nan};
+    if (sticking) return {};
+    return {ratio, Real(hypot(point.force_x, point.force_y)), Real(fabs(point.torque))};
   }
 };
 

@@ -48,8 +48,8 @@ struct spring_history {
 /// (projection_results.hpp), with the same first four names and curve();
 /// this type converts from it, and goes in the next release.
 template <class Vec2, class Real>
-struct [[deprecated("spinslide: spring_history_friction returns friction_result")]]
-spring_friction {
+struct [[deprecated(
+    "spinslide: spring_history_friction returns friction_result")]] spring_friction {
   Vec2 force;     ///< F
   Real torque;    ///< T about the normal
   bool sticking;  ///< true: the springs' trial state was admissible and is kept
@@ -116,9 +116,9 @@ friction_result<Vec2, typename Profile::value_type> spring_history_friction(
                           argument_rule::finite_positive, pol);
   const auto patch = detail::checked_patch(function, contact, pol);
   const Real start = checked(function, "history.curve.ratio", history.curve.ratio,
-                            argument_rule::non_negative, pol);
+                             argument_rule::non_negative, pol);
   friction_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
-                                   history.curve};
+                                  history.curve};
   // Every output NaN (and the history as it was) where a check reported an
   // error through a policy that does not throw.
   auto reported = [&out](Real bad) {

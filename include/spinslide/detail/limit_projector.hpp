@@ -46,6 +46,22 @@ namespace spinslide {
 
 namespace detail {
 
+// True if (f, t) lies in the triangle (0, 0), (1, 0), (0, ⟨r⟩) (`top` =
+// ⟨r⟩), which lies in every profile's L (convex, with those three points):
+// sticking, without evaluating the profile.
+template <class Real>
+bool in_sticking_triangle(Real f, Real t, Real top) {
+  return f + t / top <= 1;
+}
+// The same for a force (fx, fy) and a torque t ≥ 0, without a square root:
+// |f|² ≤ (1 − t/⟨r⟩)² (a square that overflows is outside, one that
+// underflows inside, as they are).
+template <class Real>
+bool in_sticking_triangle(Real fx, Real fy, Real t, Real top) {
+  const Real room = 1 - t / top;
+  return room >= 0 && fx * fx + fy * fy <= room * room;
+}
+
 template <class Profile>
 class limit_projector {
   using Real = typename Profile::value_type;
@@ -58,7 +74,7 @@ class limit_projector {
   // The projection, searching from `start` (a ratio; 0 or ∞: no guess), or
   // from the curve point `from` (at the ratio `start`) if given.
   limit_projection<Real> operator()(Real start, const curve_point<Real>* from = nullptr) {
-    if (x_ + y_ / top_ <= 1) return sticking();  // inside the triangle (0,0), (1,0), (0,⟨r⟩)
+    if (in_sticking_triangle(x_, y_, top_)) return sticking();
     if (y_ == 0) return on_curve(inf(), {Real(1), Real(0)});  // x > 1: the corner (1, 0)
     if (x_ == 0) return on_curve(Real(0), {Real(0), top_});  // y > ⟨r⟩: the corner (0, ⟨r⟩)
     return project(start, from);

@@ -78,10 +78,20 @@ class metric_projector {
     if (start > 0 && start < std::numeric_limits<Real>::infinity()) {
       const bool known =
           from && (boost::math::isfinite)(from->force) && (boost::math::isfinite)(from->torque);
-      const ray r = normal_ray(start, known ? force_torque_result<Real>{from->force, from->torque}
-                                            : p_.force_torque(start));
+      // From a ratio alone, the profile's values there serve the ray and its
+      // start (whose ratio is the same): one evaluation.
+      const own_values own =
+          known ? own_values{{from->force, from->torque}, from->slope} : values_at(start);
+      // Along the slip M(z − p) that the curve point p at the start, in z's
+      // direction, would leave (the metric turns the slip away from z).
+      const ray first = normal_ray(start, own.ft);
+      const vec p0 = {own.ft.force * first.dx, own.ft.force * first.dy,
+                      z_[2] < 0 ? Real(-own.ft.torque) : own.ft.torque};
+      const vec slip = multiply(m_, vec{z_[0] - p0[0], z_[1] - p0[1], z_[2] - p0[2]});
+      const ray turned = normal_ray(start, own.ft, slip);
+      const ray& r = turned.resolved ? turned : first;
       if (r.resolved) {
-        const point_data x = ray_start(r);
+        const point_data x = ray_start(r, known ? nullptr : &own);
         if (x.psi < 0) return newton(x);
       }
     }
@@ -142,13 +152,17 @@ class metric_projector {
     bool resolved;  // gain > 0 beyond rounding
   };
   ray normal_ray(Real eps, const force_torque_result<Real>& c) const {
-    const Real zf = length(z_[0], z_[1]);
+    return normal_ray(eps, c, z_);
+  }
+  // The same along the force direction and torque sign of `toward`.
+  ray normal_ray(Real eps, const force_torque_result<Real>& c, const vec& toward) const {
+    const Real zf = length(toward[0], toward[1]);
     const bool wide = eps > 1;
     const Real nf = wide ? Real(1) : eps, nt = wide ? Real(1 / eps) : Real(1);
     ray r;
-    r.dx = zf > 0 ? Real(z_[0] / zf) : Real(1);
-    r.dy = zf > 0 ? Real(z_[1] / zf) : Real(0);
-    r.n = {nf * r.dx, nf * r.dy, z_[2] < 0 ? Real(-nt) : nt};
+    r.dx = zf > 0 ? Real(toward[0] / zf) : Real(1);
+    r.dy = zf > 0 ? Real(toward[1] / zf) : Real(0);
+    r.n = {nf * r.dx, nf * r.dy, toward[2] < 0 ? Real(-nt) : nt};
     const Real along = dot(z_, r.n), support = nf * c.force + nt * c.torque;
     r.gain = along - support;
     using std::fabs;
@@ -182,7 +196,29 @@ class metric_projector {
     return (boost::math::isfinite)(w) && w > 0 ? w : Real(1);
   }
 
-  point_data point(const vec& s) const {
+  // The profile's own values at a ratio: 𝓕, 𝓣, and 𝓕′ where it comes with
+  // them (fused_value_slope; else NaN, unused).
+  struct own_values {
+    force_torque_result<Real> ft;
+    Real slope;
+  };
+  own_values values_at(Real eps) const {
+    if constexpr (fused_value_slope<Profile>::value) {
+      // 𝓕′ with the values, from the same call (Hertz, Boussinesq): the
+      // Hessian needs it at every iterate.
+      if (eps > 0 && eps < std::numeric_limits<Real>::infinity()) {
+        const auto both = fused_value_slope<Profile>::template at<false>(p_, eps);
+        return {both.value, both.slope};
+      }
+    }
+    return {p_.force_torque(eps), std::numeric_limits<Real>::quiet_NaN()};
+  }
+
+  point_data point(const vec& s) const { return point(s, nullptr); }
+  // At s, from the profile's own values `known` at s's ratio where the
+  // caller has them (the ray's start: its ratio is the one they were
+  // evaluated at, to rounding), else evaluating the profile.
+  point_data point(const vec& s, const own_values* known) const {
     point_data d;
     d.s = s;
     d.along = length(s[0], s[1]);
@@ -190,19 +226,9 @@ class metric_projector {
     d.across = fabs(s[2]);
     d.eps = d.across > 0 ? Real(d.along / d.across) : std::numeric_limits<Real>::infinity();
     if (d.along == 0) d.eps = 0;
-    if constexpr (fused_value_slope<Profile>::value) {
-      // 𝓕′ with the values, from the same call (Hertz, Boussinesq): the
-      // Hessian needs it at every iterate.
-      if (d.eps > 0 && d.eps < std::numeric_limits<Real>::infinity()) {
-        const auto both = fused_value_slope<Profile>::template at<false>(p_, d.eps);
-        d.ft = both.value;
-        d.slope = both.slope;
-      } else {
-        d.ft = p_.force_torque(d.eps);
-      }
-    } else {
-      d.ft = p_.force_torque(d.eps);
-    }
+    const own_values v = known ? *known : values_at(d.eps);
+    d.ft = v.ft;
+    d.slope = v.slope;
     const Real unit = d.along > 0 ? Real(d.ft.force / d.along) : Real(0);
     d.grad_d = {s[0] * unit, s[1] * unit,
                 s[2] > 0   ? d.ft.torque
@@ -223,9 +249,9 @@ class metric_projector {
   // kink at s = 0, where a start in a poor direction (an ill-conditioned M)
   // would make the iteration collapse; so the caller starts there only if
   // Ψ < 0 (a curve point's values may not be the profile's).
-  point_data ray_start(const ray& r) const {
+  point_data ray_start(const ray& r, const own_values* known = nullptr) const {
     const Real tau = r.gain / dot(r.n, multiply(inverse_, r.n));
-    return point({tau * r.n[0], tau * r.n[1], tau * r.n[2]});
+    return point({tau * r.n[0], tau * r.n[1], tau * r.n[2]}, known);
   }
 
   // 𝓕′(ε), closed form where the profile has one, else the secant through
@@ -310,16 +336,20 @@ class metric_projector {
   // Ψ (line_search), and after max_newton_iterations (a load concentrated
   // within radius 1e-6 took 54; docs/reliability.md) the last iterate is the
   // answer.
+  // A step within first_order() of s ends the iteration without evaluating
+  // the profile again (last_step).
   wrench_projection<Real> newton(point_data x) const {
     const Real tiny = 4 * epsilon();
     point_data previous{};
     for (int iteration = 0; iteration < max_newton_iterations; ++iteration) {
       const vec g = gradient(x);
-      const vec step = newton_step(x, g, iteration > 0 ? &previous : nullptr);
+      const matrix3<Real> h = hessian_of_d(x, iteration > 0 ? &previous : nullptr);
+      const vec step = newton_step(h, g);
       const directional start = along(x, g, step);
       const bool at_rounding = !(start.slope < -start.rounding) && !start.resolved;
       if (at_rounding || !(start.slope < 0) || largest(step) <= tiny * largest(x.s))
         return result(x);
+      if (first_order(x, step)) return last_step(x, h, step);
       previous = x;
       if (!line_search(previous, step, start, x)) return result(x);
     }
@@ -405,15 +435,49 @@ class metric_projector {
     return false;
   }
 
-  // δ = −(M⁻¹ + ∇²D)⁻¹∇Ψ.
-  vec newton_step(const point_data& x, const vec& g, const point_data* previous) const {
-    matrix3<Real> h = hessian_of_d(x, previous);
+  // δ = −(M⁻¹ + ∇²D)⁻¹∇Ψ, for ∇²D = `hd`.
+  vec newton_step(matrix3<Real> h, const vec& g) const {
     for (std::size_t i = 0; i < 3; ++i)
       for (std::size_t j = 0; j < 3; ++j) h[i][j] += inverse_[i][j];
     vec step{};
     if (!solve_symmetric(h, g, step)) solve_symmetric(inverse_, g, step);  // ∇²D not finite
     for (Real& v : step) v = -v;
     return step;
+  }
+
+  // True if the Newton step δ from x is small enough to take to first
+  // order, by the 2-D search's rule (limit_projector::advance): r² ≤
+  // epsilon^(4/3), r the larger of |δ_f|/|s_f| and |δ_t|/|s_t| (so that ε
+  // and the force's direction change relatively by O(r)), where 𝓕′ is the
+  // profile's closed form (elsewhere the Hessian's secant slope is not good
+  // to r).  Then the error left after the step, O(r²) of s, and the terms of
+  // ∇D(s + δ) left out of ∇D(s) + ∇²D(s)δ, O(r²) of ∇D, are below rounding.
+  bool first_order(const point_data& x, const vec& step) const {
+    if constexpr (fused_value_slope<Profile>::value || has_force_slope<Profile>()) {
+      using std::cbrt;
+      using std::fabs;
+      static const Real limit = epsilon() * cbrt(epsilon());
+      if (!(x.eps > 0 && x.eps < std::numeric_limits<Real>::infinity())) return false;
+      const Real rf = length(step[0], step[1]) / x.along, rt = fabs(step[2]) / x.across;
+      const Real r = (std::max)(rf, rt);
+      return r * r <= limit;
+    }
+    static_cast<void>(x);
+    static_cast<void>(step);
+    return false;
+  }
+  // The answer after a step δ within first_order() of x: s + δ, and the
+  // curve point ∇D(s + δ) as ∇D(s) + ∇²D(s)δ (`hd` = ∇²D(s)), which is
+  // M(z − p) = s + δ exactly where the step solved Newton's equation.
+  wrench_projection<Real> last_step(const point_data& x, const matrix3<Real>& hd,
+                                    const vec& step) const {
+    using std::fabs;
+    const vec s = shifted(x.s, step, Real(1));
+    const vec dp = multiply(hd, step);
+    const Real along_s = length(s[0], s[1]), across_s = fabs(s[2]);
+    return {{x.grad_d[0] + dp[0], x.grad_d[1] + dp[1], x.grad_d[2] + dp[2]},
+            false,
+            Real(along_s / across_s)};
   }
 
   // √(x² + y²), by hypot only where the squares could over- or underflow

@@ -98,16 +98,15 @@ class pair_friction {
   /// Starts from where the pair's last slip left the limit curve and keeps
   /// the new point.
   friction_result<std::array<double, 2>, double> impulse(const std::array<double, 2>& velocity,
-                                                          double spin,
-                                                          const planar_metric<double>& inverse_mass,
-                                                          normal_impulse<double> normal,
-                                                          double penetration) {
+                                                         double spin,
+                                                         const planar_metric<double>& inverse_mass,
+                                                         normal_impulse<double> normal,
+                                                         double penetration) {
     const impulse_contact<double> contact{patch_radius<double>{radius(penetration)}, normal,
                                           friction_coefficient<double>{friction_}};
     const auto out = std::visit(
         [&](const auto& profile) {
-          return impulse_friction(profile, velocity, spin, inverse_mass, contact,
-                                  last_);
+          return impulse_friction(profile, velocity, spin, inverse_mass, contact, last_);
         },
         profile_);
     last_ = out.sticking ? curve_point<double>{} : out.curve();
