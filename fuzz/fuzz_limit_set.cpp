@@ -112,8 +112,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     });
     const validity vs = v == validity::valid ? valid_if(start >= 0) : v;
     expect(vs, "project_to_limit_set(start)", [&] {
-      const auto warm = spinslide::project_to_limit_set(p, q.x, q.y, q.w,
-                                                        spinslide::curve_point<double>{start});
+      const auto warm =
+          spinslide::project_to_limit_set(p, q.x, q.y, q.w, spinslide::curve_point<double>{start});
       check_projection(p, q, warm, caps);
       if (ran && warm.sticking == cold.sticking && !cold.sticking) {
         // Both nearest to rounding.

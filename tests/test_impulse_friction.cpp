@@ -297,4 +297,29 @@ TEST(ImpulseFriction, RegressionZigZagAcrossPureSliding) {
               1e-6 * r.ratio);
 }
 
+// issue 26 - a load concentrated within radius 7e-6 plus a ring, in an
+// inverse mass conditioned about 5e5 (fuzz_impulse, a 10-minute campaign:
+// 26 reports of this kind): D is a cone in the force's slip beyond
+// |s_f| ≈ 7e-6|s_t|, Newton's steps zig-zagged across s_f = 0, and the
+// impulse added kinetic energy.  A step past s_f's nearest approach to 0
+// now goes first as far as that approach.
+TEST(ImpulseFriction, RegressionZigZagAcrossTheConeOfAConcentratedLoad) {
+  const planar_metric<double> inverse_mass(planar_metric<double>::matrix{
+      {{3057.44142274864680076, 304.663581637285290071, -453.833521726022468101},
+       {304.663581637285290071, 40.3061166258300431764, -44.3573233699522972984},
+       {-453.833521726022468101, -44.3573233699522972984, 67.5161392564017859286}}});
+  const auto p = make_weighted_sum<double>(
+      {0.000480710649395849239085, 0.000481591914550557210345},
+      scaled<uniform_disk<double>>(uniform_disk<double>(), 7.05531999212194534159e-06),
+      ring<double>());
+  const impulse_contact<double> c{patch_radius<double>{0.486274509803921561879},
+                                  normal_impulse<double>{0.478828220741421561879},
+                                  friction_coefficient<double>{0.486274509803921561879}};
+  const std::array<double, 3> s{0.486274509803921561879, 0.486274509803921561879,
+                                0.236274509803921534123};
+  const auto r = impulse_friction(p, std::array<double, 2>{s[0], s[1]}, s[2], inverse_mass, c);
+  const auto e = energies(inverse_mass, s, r);
+  EXPECT_LE(e[1], e[0]) << "the impulse took kinetic energy out";
+}
+
 }  // namespace

@@ -295,23 +295,50 @@ TEST(MetricProjection, RegressionStallWithANearlySingularMetric) {
   expect_optimal(p, metric.entries(), z, r);
 }
 
+// The projection of z for a load concentrated within radius 1e-6 (weight
+// `load`) plus a ring (weight `ring_weight`) in the metric m: optimal, with
+// the force along z's; returns it.
+wrench_projection<double> expect_nearest_for_a_concentrated_load(double load, double ring_weight,
+                                                                 const matrix& m,
+                                                                 const tangent_wrench<double>& z) {
+  const auto p = make_weighted_sum<double>(
+      {load, ring_weight},
+      scaled<uniform_disk<double>>(uniform_disk<double>(), 9.99999999999999954748e-07),
+      ring<double>());
+  const auto r = project_to_limit_set(p, z, planar_metric<double>(m));
+  expect_optimal(p, m, z, r);
+  EXPECT_GT(r.point.force_x * z.force_x + r.point.force_y * z.force_y, 0) << "the force along z's";
+  return r;
+}
+
 // issue 26 - a load concentrated within radius 1e-6 plus a ring (fuzz_impulse,
 // after the line search first went by the slope's sign): D has a near-corner
 // at ε ≈ 1e-6, the line search's secant crawled there, and the answer came
 // out with the force reversed, 600 times farther than the nearest point.
 TEST(MetricProjection, RegressionNearCornerOfAConcentratedLoad) {
-  const auto p = make_weighted_sum<double>(
-      {41.8390708471192738216, 7.81116904277345813767},
-      scaled<uniform_disk<double>>(uniform_disk<double>(), 9.99999999999999954748e-07),
-      ring<double>());
-  const matrix m{
-      {{9.79873218838664696218e-33, 9.89884952324594475011e-33, 9.87951583277085400931e-33},
-       {9.89884952324594475011e-33, 1.89223252399063083355e-32, 1.94262695312499979925e-32},
-       {9.87951583277085400931e-33, 1.94262695312499979925e-32, 2.01172356469797618285e-32}}};
-  const tangent_wrench<double> z{0.5, -1, 0.56249964096966920124};
-  const auto r = project_to_limit_set(p, z, planar_metric<double>(m));
-  expect_optimal(p, m, z, r);
-  EXPECT_GT(r.point.force_x * z.force_x + r.point.force_y * z.force_y, 0) << "the force along z's";
+  expect_nearest_for_a_concentrated_load(
+      41.8390708471192738216, 7.81116904277345813767,
+      {{{9.79873218838664696218e-33, 9.89884952324594475011e-33, 9.87951583277085400931e-33},
+        {9.89884952324594475011e-33, 1.89223252399063083355e-32, 1.94262695312499979925e-32},
+        {9.87951583277085400931e-33, 1.94262695312499979925e-32, 2.01172356469797618285e-32}}},
+      {0.5, -1, 0.56249964096966920124});
+}
+
+// issue 26 - the same kind of profile in another metric the fuzzer found
+// (fuzz_impulse, seed 95): D is a cone in the force's slip beyond
+// |s_f| ≈ 1e-6|s_t|, and Newton's steps zig-zagged across s_f = 0 for 100
+// iterations, ending at ε = 0.027 on the far side, 150 times farther (in the
+// metric) than the nearest point at ε = 5.4e-7, which 4e97082 found.  A
+// step past s_f's nearest approach to 0 now goes first as far as that
+// approach.
+TEST(MetricProjection, RegressionConeOfAConcentratedLoad) {
+  const auto r = expect_nearest_for_a_concentrated_load(
+      31.6227766016838920393, 7.81116904277355406094,
+      {{{9.70437632621352464096e-31, 9.85107352142570704785e-32, -8.50862389679481222685e-32},
+        {9.85107352142570704785e-32, 2.00000085843897353057e-32, 1.3609218471852611338e-33},
+        {-8.50862389679481222685e-32, 1.3609218471852611338e-33, 2.74565797735634131411e-32}}},
+      {0.5, -1, 0.97647058823529420124});
+  EXPECT_LT(r.ratio, 1e-6);
 }
 
 // issue 26 - a point 1e-14 beyond the corner (1, 0) in a metric conditioned

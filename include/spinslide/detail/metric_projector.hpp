@@ -331,15 +331,13 @@ class metric_projector {
   // Converged when Newton's decrement −∇Ψ·δ is within that rounding and
   // every component of ∇Ψ within its own (along(): no direction left in
   // which Ψ falls that this type can show), when δ is no descent direction,
-  // or when the step is below 4 ulp of s.  Never fails: every iterate is on
-  // the curve with s along its normal, each step lowers the strictly convex
-  // Ψ (line_search), and after max_newton_iterations (a load concentrated
-  // within radius 1e-6 took 54; docs/reliability.md) the last iterate is the
-  // answer.
-  // A step within first_order() of s ends the iteration without evaluating
-  // the profile again (last_step).
+  // or when the step is negligible (below 4 ulp of s_f and of s_t).  Never
+  // fails: every iterate is on the curve with s along its normal, each step
+  // lowers the strictly convex Ψ (line_search), and after
+  // max_newton_iterations the last iterate is the answer.  A step within
+  // first_order() of s ends the iteration without evaluating the profile
+  // again (last_step).
   wrench_projection<Real> newton(point_data x) const {
-    const Real tiny = 4 * epsilon();
     point_data previous{};
     for (int iteration = 0; iteration < max_newton_iterations; ++iteration) {
       const vec g = gradient(x);
@@ -347,8 +345,7 @@ class metric_projector {
       const vec step = newton_step(h, g);
       const directional start = along(x, g, step);
       const bool at_rounding = !(start.slope < -start.rounding) && !start.resolved;
-      if (at_rounding || !(start.slope < 0) || largest(step) <= tiny * largest(x.s))
-        return result(x);
+      if (at_rounding || !(start.slope < 0) || negligible(x, step, Real(1))) return result(x);
       if (first_order(x, step)) return last_step(x, h, step);
       previous = x;
       if (!line_search(previous, step, start, x)) return result(x);
@@ -409,19 +406,8 @@ class metric_projector {
   bool line_search(const point_data& x, const vec& step, const directional& start,
                    point_data& next) const {
     using std::fabs;
-    const Real floor = 4 * epsilon() * largest(x.s);
-    // A step that takes the torque's slip across 0 goes first as far as 0
-    // (pure sliding, where D's curvature in s_t is ⟨r²⟩/(2|s_f|)): beyond,
-    // D is a V in s_t (|s_t|⟨r⟩ at small ε) that the model at this side does
-    // not see, and full steps across zig-zag (fuzz_impulse: 100 iterations).
-    Real t = 1;
-    // (Not from where s_t is already below √ε of s: there the model sees
-    // both sides, and the answer may lie just across.)
-    using std::sqrt;
-    static const Real near = sqrt(epsilon());
-    if (x.s[2] * step[2] < 0 && fabs(step[2]) > fabs(x.s[2]) && fabs(x.s[2]) > near * largest(x.s))
-      t = -x.s[2] / step[2];
-    for (int k = 0; k < max_line_steps && t * largest(step) > floor; ++k) {
+    Real t = first_trial(x, step);
+    for (int k = 0; k < max_line_steps && !negligible(x, step, t); ++k) {
       point_data y = point(shifted(x.s, step, t));
       const directional d = along(y, gradient(y), step);
       const Real slack = 4 * epsilon() * (x.psi_scale + y.psi_scale);
@@ -433,6 +419,47 @@ class metric_projector {
       t /= 2;
     }
     return false;
+  }
+
+  // True if the step tδ from x is below 4 ulp of s in each of its blocks,
+  // s_f and s_t, each against its own size (where s_f is 1e-9 of s_t, at a
+  // concentrated load's answer ε = 5e-7, its own digits still move the
+  // answer), or below ε_mach² of s in a block that is 0.
+  static bool negligible(const point_data& x, const vec& step, Real t) {
+    using std::fabs;
+    const Real tiny = 4 * epsilon(), zero = epsilon() * epsilon() * largest(x.s);
+    return t * length(step[0], step[1]) <= tiny * x.along + zero &&
+           t * fabs(step[2]) <= tiny * x.across + zero;
+  }
+
+  // The line search's first t: 1, but a step that takes the torque's slip
+  // across 0 goes first as far as 0 (pure sliding, where D's curvature in
+  // s_t is ⟨r²⟩/(2|s_f|)): beyond, D is a V in s_t (|s_t|⟨r⟩ at small ε)
+  // that the model at this side does not see, and full steps across
+  // zig-zag (fuzz_impulse: 100 iterations).  Likewise a step that takes the
+  // force's slip past its nearest approach to 0 (reversing its direction)
+  // goes first as far as that approach: where 𝓕 rises steeply from ε = 0 (a
+  // load concentrated within radius 1e-6, 𝓕′(0) = ⟨1/r⟩/2 = 1e6), D is a
+  // cone in s_f (about 𝓕|s_f|) beyond a core of |s_f| ≈ 1e-6|s_t|, and full
+  // steps across it zig-zagged for 100 iterations and ended 150 times
+  // farther than the nearest point (fuzz_impulse).  (Neither from where that
+  // slip is already below √ε of s: there the model sees both sides, and the
+  // answer may lie just across.)
+  static Real first_trial(const point_data& x, const vec& step) {
+    using std::fabs;
+    using std::sqrt;
+    static const Real near = sqrt(epsilon());
+    const Real size = largest(x.s);
+    Real t = 1;
+    if (x.s[2] * step[2] < 0 && fabs(step[2]) > fabs(x.s[2]) && fabs(x.s[2]) > near * size)
+      t = -x.s[2] / step[2];
+    // s_f + tδ_f is nearest 0 at t = −s_f·δ_f/|δ_f|² (in units of s's
+    // size); the step reverses s_f where s_f·(s_f + δ_f) < 0.
+    const Real f0 = x.s[0] / size, f1 = x.s[1] / size, d0 = step[0] / size, d1 = step[1] / size;
+    const Real along = f0 * d0 + f1 * d1, reach = d0 * d0 + d1 * d1;
+    const bool reverses = f0 * f0 + f1 * f1 + along < 0;
+    if (reverses && -along < t * reach && x.along > near * size) t = -along / reach;
+    return t;
   }
 
   // δ = −(M⁻¹ + ∇²D)⁻¹∇Ψ, for ∇²D = `hd`.
