@@ -48,7 +48,7 @@ struct [[deprecated(
   bool sticking;  ///< true: the impulse stops the contact exactly
   Real ratio;     ///< ε after the step (NaN if sticking)
   /// The old names of a friction_result's values.
-  friction_impulse(const friction_result<Vec2, Real>& r)  // NOLINT(google-explicit-constructor)
+  friction_impulse(const friction_result<Vec2, Real>& r)
       : linear(r.force), angular(r.torque), sticking(r.sticking), ratio(r.ratio) {}
 };
 

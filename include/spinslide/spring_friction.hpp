@@ -55,7 +55,7 @@ struct [[deprecated(
   bool sticking;  ///< true: the springs' trial state was admissible and is kept
   Real ratio;     ///< ε of the capped state (NaN if sticking)
   /// The old names of a friction_result's values.
-  spring_friction(const friction_result<Vec2, Real>& r)  // NOLINT(google-explicit-constructor)
+  spring_friction(const friction_result<Vec2, Real>& r)
       : force(r.force), torque(r.torque), sticking(r.sticking), ratio(r.ratio) {}
 };
 

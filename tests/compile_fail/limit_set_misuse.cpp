@@ -14,8 +14,8 @@ int main() {
   const spinslide::hertz<> profile;
 #if MISUSE == 0
   const auto a = spinslide::project_to_limit_set(profile, 0.5, 0.5, 1.0);
-  const auto b = spinslide::project_to_limit_set(profile, 0.5, 0.5, 1.0,
-                                                 spinslide::curve_point<double>{0.6});
+  const auto b =
+      spinslide::project_to_limit_set(profile, 0.5, 0.5, 1.0, spinslide::curve_point<double>{0.6});
   // Tables, shrunk profiles and sums of profiles that obey T' = -eps F'.
   const spinslide::tabulated_profile<> table(profile);
   const spinslide::scaled<spinslide::hertz<>> shrunk(profile, 0.5);
