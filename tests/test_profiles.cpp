@@ -420,6 +420,39 @@ TEST(RadialProfile, RegressionPressureOfAnySizeIsTheSameProfile) {
                std::domain_error);
 }
 
+// fuzz_profiles: a pressure of subnormal values (c/√(1 − r), c = 5e-324, on
+// [0.696, 1]) is a staircase of multiples of 5e-324, and its moments missed
+// by 1 %: ⟨r⟩² > ⟨r²⟩, which no load allows (Jensen).  Guards refusing a load
+// per unit width below the smallest normal number, and keeping the same
+// pressure scaled into the normal range: its moments are the exact ones,
+// ∫ r^n/√(1 − r) dr over [b, 1] = 2∫ (1 − u²)^n du over [0, √(1 − b)]
+// (u = √(1 − r)).
+TEST(RadialProfile, RegressionSubnormalPressureIsRefused) {
+  const double b = 0.696;
+  const auto rim = [](double scale) {
+    return [scale](double, double one_minus_r) { return scale / std::sqrt(one_minus_r); };
+  };
+  for (const double c : {5e-324, 1e-320, 1e-310}) {
+    try {
+      make_radial_profile<double>(rim(c), b);
+      ADD_FAILURE() << c;
+    } catch (const std::domain_error& e) {
+      EXPECT_NE(std::string(e.what()).find("subnormal"), std::string::npos) << e.what();
+    }
+  }
+  const double w = std::sqrt(1 - b);  // m_n = ∫ r^n/√(1 − r) dr, by the binomial theorem
+  const double m1 = 2 * (w - w * w * w / 3);
+  const double m2 = 2 * (w - 2 * std::pow(w, 3) / 3 + std::pow(w, 5) / 5);
+  const double m3 = 2 * (w - std::pow(w, 3) + 3 * std::pow(w, 5) / 5 - std::pow(w, 7) / 7);
+  const double m0 = 2 * w;  // ∫ 1/√(1 − r) dr, ⟨1/r⟩'s numerator
+  for (const double c : {3e-308, 1.0}) {
+    const auto p = make_radial_profile<double>(rim(c), b);
+    EXPECT_NEAR(p.mean_radius(), m2 / m1, 1e-14) << c;
+    EXPECT_NEAR(p.mean_square_radius(), m3 / m1, 1e-14) << c;
+    EXPECT_NEAR(p.mean_inverse_radius(), m0 / m1, 1e-14) << c;
+  }
+}
+
 // fuzz_profiles: on the support [1 − 2⁻⁵³, 1], whose middle rounds to 1, the
 // pressure was asked at 1 − r = 0 (where it is infinite); guards asking it at
 // 1 − r = half the width.  Every moment of a load on [inner, 1] lies between

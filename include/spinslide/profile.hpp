@@ -416,6 +416,12 @@ class radial_profile : public profile_base<radial_profile<Real, Pressure, Policy
     total_ = detail::checked_constructor_argument<Policy>(
         constructor, "the total load (relative to p at the middle of the support)", moment(0),
         detail::argument_rule::finite_positive);
+    // Subnormal values round to multiples of the smallest subnormal, which
+    // costs the integral at most that over the support's width: relative ε
+    // once the load per unit width is normal.
+    detail::checked_constructor_argument<Policy>(
+        constructor, "the load per unit width of the support, (integral of r p(r) dr)/(1 - b)",
+        Real(total_ * scale_ / (1 - inner_)), detail::argument_rule::normal_load);
     mean_inverse_ = moment(-1) / total_;
     mean_ = moment(1) / total_;
     mean_square_ = moment(2) / total_;

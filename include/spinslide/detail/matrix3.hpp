@@ -4,10 +4,14 @@
 //
 // 3-vectors and symmetric 3×3 matrices over the tangent plane's (x, y) and the
 // normal spin, for the metric projection and the impulse law: products,
-// Cholesky factorization and solves.  Small and fixed-size: no allocation.
+// Cholesky factorization and solves, lengths.  Small and fixed-size: no
+// allocation.
 #ifndef SPINSLIDE_DETAIL_MATRIX3_HPP
 #define SPINSLIDE_DETAIL_MATRIX3_HPP
 
+#include <boost/math/tools/precision.hpp>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -31,6 +35,32 @@ vector3<Real> multiply(const matrix3<Real>& a, const vector3<Real>& x) {
 template <class Real>
 Real dot(const vector3<Real>& a, const vector3<Real>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// √(x² + y²), by hypot only where the squares could over- or underflow
+// (outside the square roots of the normal numbers, with a margin).
+template <class Real>
+Real length(Real x, Real y) {
+  using std::fabs;
+  using std::hypot;
+  using std::sqrt;
+  static const Real low = 16 * sqrt(boost::math::tools::min_value<Real>());
+  static const Real high = sqrt(boost::math::tools::max_value<Real>()) / 16;
+  const Real big = (std::max)(fabs(x), fabs(y));
+  return big > low && big < high ? Real(sqrt(x * x + y * y)) : Real(hypot(x, y));
+}
+
+// max |vᵢ|.
+template <class Real>
+Real largest(const vector3<Real>& v) {
+  using std::fabs;
+  return (std::max)({Real(fabs(v[0])), Real(fabs(v[1])), Real(fabs(v[2]))});
+}
+
+// s + t·step.
+template <class Real>
+vector3<Real> shifted(const vector3<Real>& s, const vector3<Real>& step, Real t) {
+  return {s[0] + t * step[0], s[1] + t * step[1], s[2] + t * step[2]};
 }
 
 // ‖A‖_F, the Frobenius norm.

@@ -24,6 +24,7 @@
 #ifndef SPINSLIDE_DETAIL_METRIC_PROJECTOR_HPP
 #define SPINSLIDE_DETAIL_METRIC_PROJECTOR_HPP
 
+#include <spinslide/detail/dissipation_hessian.hpp>
 #include <spinslide/detail/force_slope.hpp>
 #include <spinslide/detail/limit_projector.hpp>
 #include <spinslide/detail/matrix3.hpp>
@@ -45,13 +46,14 @@ template <class Profile>
 class metric_projector {
   using Real = typename Profile::value_type;
   using vec = vector3<Real>;
+  using point_data = slip_point<Real>;
 
  public:
   // z finite (checked by the caller); `metric` M and `inverse` M⁻¹, symmetric
   // positive definite (a planar_metric's, or derived from one).
   metric_projector(const Profile& profile, const vec& z, const matrix3<Real>& metric,
                    const matrix3<Real>& inverse)
-      : p_(profile), z_(z), m_(metric), inverse_(inverse) {
+      : p_(profile), hessian_of_d_(profile), z_(z), m_(metric), inverse_(inverse) {
     // The nearest point does not change if M is scaled: M/d and d·M⁻¹, d the
     // largest diagonal entry, keep s and Ψ away from over- and underflow
     // for metrics of any size.
@@ -175,19 +177,6 @@ class metric_projector {
     return {{c.force * r.dx, c.force * r.dy, z_[2] < 0 ? Real(-c.torque) : c.torque}, false, eps};
   }
 
-  // Ψ, ∇D and what the Hessian needs at one s.
-  struct point_data {
-    vec s;
-    Real along = 0, across = 0;  // |s_f| and |s_t|
-    Real eps = 0;
-    force_torque_result<Real> ft{0, 0};
-    vec grad_d{};  // ∇D(s): the point of the curve
-    Real psi = 0;
-    Real psi_scale = 0;  // the sum of |Ψ|'s terms: its rounding is a few ulp of it
-    vec ms{};            // M⁻¹s
-    Real slope = 0;  // 𝓕′(ε), where the profile gives it with the values (fused_value_slope)
-  };
-
   // The torque's weight relative to the force's for the 2-D start and test
   // (which one only changes the start: stick or slip does not depend on it).
   Real torque_weight() const {
@@ -254,74 +243,6 @@ class metric_projector {
     return point({tau * r.n[0], tau * r.n[1], tau * r.n[2]}, known);
   }
 
-  // 𝓕′(ε), closed form where the profile has one, else the secant through
-  // the previous iterate where it is within 10 % in ε (as Newton's steps
-  // are near the answer), else a forward difference (one more evaluation);
-  // each in 𝓣 through 𝓣′ = −ε𝓕′ where 𝓕 > 1/2, where 𝓕's differences round
-  // away.  Newton needs only an approximate Hessian: the gradient is exact.
-  Real slope(const point_data& d, const point_data* previous) const {
-    if constexpr (fused_value_slope<Profile>::value) {
-      return d.slope;
-    } else if constexpr (has_force_slope<Profile>()) {
-      return force_slope(p_, d.eps);
-    } else {
-      using std::fabs;
-      if (previous && previous->eps > 0 && previous->eps < std::numeric_limits<Real>::infinity()) {
-        const Real gap = fabs(d.eps - previous->eps);
-        Real secant = difference_slope(d, previous->eps, previous->ft);
-        if (gap > 0 && gap <= d.eps / 10 && secant > 0 && (boost::math::isfinite)(secant))
-          return secant;
-      }
-      using std::sqrt;
-      static const Real relative = sqrt(epsilon());
-      const Real next = d.eps * (1 + relative);
-      return difference_slope(d, next, p_.force_torque(next));
-    }
-  }
-  // The slope of the chord from d to the curve point (e, c).
-  static Real difference_slope(const point_data& d, Real e, const force_torque_result<Real>& c) {
-    return d.ft.force <= Real(0.5)
-               ? Real((c.force - d.ft.force) / (e - d.eps))
-               : Real((d.ft.torque - c.torque) / ((e - d.eps) * ((e + d.eps) / 2)));
-  }
-
-  // The Hessian of D, rank two: (𝓕′ε/|s_f|) u uᵀ + (𝓕/|s_f|)(I − ddᵀ) on the
-  // force block, u = (d, −ε sign s_t); in 1/|s_t| form where ε ≤ 1 (finite
-  // at ε = 0: ⟨1/r⟩/2 I), and its ε = ∞ limit (⟨r²⟩/2 for the torque).
-  matrix3<Real> hessian_of_d(const point_data& d, const point_data* previous) const {
-    matrix3<Real> h{};
-    const Real sign = d.s[2] < 0 ? Real(-1) : Real(1);
-    const Real dx = d.along > 0 ? Real(d.s[0] / d.along) : Real(1);
-    const Real dy = d.along > 0 ? Real(d.s[1] / d.along) : Real(0);
-    Real a = 0, b = 0, c = 0, q = 0, scale = 1;  // u uᵀ weights, and the (I − ddᵀ) weight
-    if (d.eps == 0) {
-      a = q = p_.mean_inverse_radius() / 2;  // 𝓕′(0) = 𝓕/ε at 0
-      scale = 1 / d.across;
-    } else if (!(d.eps < std::numeric_limits<Real>::infinity())) {
-      q = 1;
-      c = p_.mean_square_radius() / 2;  // ε³𝓕′ → ⟨r²⟩/2
-      scale = 1 / d.along;
-    } else {
-      const Real fp = slope(d, previous);
-      const bool small = d.eps <= 1;
-      // 1/|s_t| form: 𝓕′ ddᵀ + (𝓕/ε)(I − ddᵀ), −𝓕′ε σd, 𝓕′ε²; 1/|s_f| form: times ε.
-      a = small ? fp : fp * d.eps;
-      b = small ? fp * d.eps : fp * d.eps * d.eps;
-      c = small ? fp * d.eps * d.eps : fp * d.eps * d.eps * d.eps;
-      q = small ? Real(d.ft.force / d.eps) : d.ft.force;
-      scale = small ? 1 / d.across : 1 / d.along;
-    }
-    if (!(boost::math::isfinite)(a)) a = 0;  // ⟨1/r⟩ = ∞: left to the line search
-    const Real dd[2] = {dx, dy};
-    for (std::size_t i = 0; i < 2; ++i) {
-      for (std::size_t j = 0; j < 2; ++j)
-        h[i][j] = scale * ((a - q) * dd[i] * dd[j] + (i == j ? q : Real(0)));
-      h[i][2] = h[2][i] = -scale * b * sign * dd[i];
-    }
-    h[2][2] = scale * c;
-    return h;
-  }
-
   // Newton's method on Ψ from s: the step δ solves (M⁻¹ + ∇²D)δ = −∇Ψ, and
   // the line search moves along it by the sign of Ψ's slope ∇Ψ·δ, which is
   // known to the rounding of ∇Ψ's terms (a few ulp of z's size), not by Ψ's
@@ -341,7 +262,7 @@ class metric_projector {
     point_data previous{};
     for (int iteration = 0; iteration < max_newton_iterations; ++iteration) {
       const vec g = gradient(x);
-      const matrix3<Real> h = hessian_of_d(x, iteration > 0 ? &previous : nullptr);
+      const matrix3<Real> h = hessian_of_d_(x, iteration > 0 ? &previous : nullptr);
       const vec step = newton_step(h, g);
       const directional start = along(x, g, step);
       const bool at_rounding = !(start.slope < -start.rounding) && !start.resolved;
@@ -507,32 +428,12 @@ class metric_projector {
             Real(along_s / across_s)};
   }
 
-  // √(x² + y²), by hypot only where the squares could over- or underflow
-  // (outside the square roots of the normal numbers, with a margin).
-  static Real length(Real x, Real y) {
-    using std::fabs;
-    using std::hypot;
-    using std::sqrt;
-    static const Real low = 16 * sqrt(boost::math::tools::min_value<Real>());
-    static const Real high = sqrt(boost::math::tools::max_value<Real>()) / 16;
-    const Real big = (std::max)(fabs(x), fabs(y));
-    return big > low && big < high ? Real(sqrt(x * x + y * y)) : Real(hypot(x, y));
-  }
-
-  static Real largest(const vec& v) {
-    using std::fabs;
-    return (std::max)({Real(fabs(v[0])), Real(fabs(v[1])), Real(fabs(v[2]))});
-  }
-
-  static vec shifted(const vec& s, const vec& step, Real t) {
-    return {s[0] + t * step[0], s[1] + t * step[1], s[2] + t * step[2]};
-  }
-
   static wrench_projection<Real> result(const point_data& d) {
     return {{d.grad_d[0], d.grad_d[1], d.grad_d[2]}, false, d.eps};
   }
 
   const Profile& p_;
+  dissipation_hessian<Profile> hessian_of_d_;
   vec z_;
   matrix3<Real> m_;
   matrix3<Real> inverse_;
