@@ -19,8 +19,10 @@
 #include <spinslide/spinslide.hpp>
 
 #include "../examples/mujoco_disk/scene.hpp"
+#include "../examples/mujoco_humanoid/humanoid.hpp"
 #include "ratio_reporter.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -74,12 +76,60 @@ void spinslide_in_mujoco_at_rest(benchmark::State& s) {
   step_the_disk(s, friction::spinslide, false);
 }
 
+// The humanoid (examples/mujoco_humanoid) standing after 3 s, and walking
+// through the first second of a fall (reset every 500 steps): every
+// body/floor pair coupled, against MuJoCo's own friction with condim 3 and 4.
+void step_the_humanoid(benchmark::State& state, const humanoid::friction_model& f, bool falling) {
+  humanoid::scene s(f);
+  if (falling) {
+    s.data->qpos[3] = std::cos(0.25);
+    s.data->qpos[4] = std::sin(0.25);
+    mj_forward(s.model.get(), s.data.get());
+  } else {
+    for (int i = 0; i < 1500; ++i) s.step();
+  }
+  const std::vector<mjtNum> qpos(s.data->qpos, s.data->qpos + s.model->nq),
+      qvel(s.data->qvel, s.data->qvel + s.model->nv);
+  int steps = 0;
+  for (auto _ : state) {
+    s.step();
+    if (++steps == 500) {
+      std::copy(qpos.begin(), qpos.end(), s.data->qpos);
+      std::copy(qvel.begin(), qvel.end(), s.data->qvel);
+      steps = 0;
+    }
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+void humanoid_native_condim3(benchmark::State& s) {
+  step_the_humanoid(s, humanoid::sliding_only, false);
+}
+void humanoid_native_condim4(benchmark::State& s) {
+  step_the_humanoid(s, humanoid::torsional, false);
+}
+void humanoid_spinslide(benchmark::State& s) { step_the_humanoid(s, humanoid::coupled, false); }
+void humanoid_native_condim3_falling(benchmark::State& s) {
+  step_the_humanoid(s, humanoid::sliding_only, true);
+}
+void humanoid_native_condim4_falling(benchmark::State& s) {
+  step_the_humanoid(s, humanoid::torsional, true);
+}
+void humanoid_spinslide_falling(benchmark::State& s) {
+  step_the_humanoid(s, humanoid::coupled, true);
+}
+
 BENCHMARK(mujoco_native)->Unit(benchmark::kMicrosecond);
 BENCHMARK(mujoco_frictionless)->Unit(benchmark::kMicrosecond);
 BENCHMARK(spinslide_in_mujoco)->Unit(benchmark::kMicrosecond);
 BENCHMARK(mujoco_native_at_rest)->Unit(benchmark::kMicrosecond);
 BENCHMARK(mujoco_frictionless_at_rest)->Unit(benchmark::kMicrosecond);
 BENCHMARK(spinslide_in_mujoco_at_rest)->Unit(benchmark::kMicrosecond);
+BENCHMARK(humanoid_native_condim3)->Unit(benchmark::kMicrosecond);
+BENCHMARK(humanoid_native_condim4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(humanoid_spinslide)->Unit(benchmark::kMicrosecond);
+BENCHMARK(humanoid_native_condim3_falling)->Unit(benchmark::kMicrosecond);
+BENCHMARK(humanoid_native_condim4_falling)->Unit(benchmark::kMicrosecond);
+BENCHMARK(humanoid_spinslide_falling)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
@@ -88,7 +138,9 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   spinslide_bench::ratio_reporter reporter(
       "mujoco_native", {{"spinslide_in_mujoco", "mujoco_native"},
-                        {"spinslide_in_mujoco_at_rest", "mujoco_native_at_rest"}});
+                        {"spinslide_in_mujoco_at_rest", "mujoco_native_at_rest"},
+                        {"humanoid_spinslide", "humanoid_native_condim4"},
+                        {"humanoid_spinslide_falling", "humanoid_native_condim4_falling"}});
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   return 0;

@@ -42,10 +42,14 @@ using bullet_scene::scene;
 using model = bullet_scene::friction;
 
 constexpr double pi = 3.14159265358979323846;
-// The time step: friction changes a speed by μgΔt = 5.9e-5 m/s per step, below
-// 1e-3 of the slowest start speed (0.10 m/s), so that the last sliding step
-// before the stop is at about 1e-3 of the start, where ε is compared; the stop
-// time is then resolved to 2e-5 s, 0.1 % of the shortest stop (0.027 s).
+// The time step: friction changes a speed by μgΔt = 2.9e-5 m/s per step, below
+// 1e-3 of the slowest start speed (0.10 m/s), so that the stop time is
+// resolved to 2e-5 s, 0.1 % of the shortest stop (0.027 s).  ε is compared
+// where the speed has fallen to 1e-2 of its start: at 1e-3 the stop is two
+// or three steps away, and the discrete steps, not the law, decide ε there
+// (issue 27: with the patch centre on the coin's axis ε tracks the exact
+// one within 0.5 % from 0.5 down to 5e-3 of the start, and misses it by
+// 2.8 % at 1e-3 on the throw (0.1, 1)).
 constexpr double dt = 1e-5;
 
 // The coin (scene.hpp: R = 12 mm, 2 mm thick, μ = 0.3), of steel.
@@ -94,6 +98,9 @@ double settle_time(const std::vector<double>& t, const std::vector<double>& x, d
   return when;
 }
 
+constexpr double level = 1e-3;      // "stopped": below 1e-3 of the start value, and stays there
+constexpr double eps_level = 1e-2;  // ε compared where the speed is 1e-2 of its start
+
 // Near the stop: the first sample, both motions still on, whose speed
 // √(v² + (Rω)²) is at most `level` of its start; if the steps jump past that
 // level, the last such sample.  Sets the log's ε and speed fraction there.
@@ -111,7 +118,7 @@ void near_stop(run_log& log, double level) {
 void summarize(run_log& log, double v0, double rw0, double level) {
   log.slide_stop = settle_time(log.t, log.v, level * v0);
   log.spin_stop = settle_time(log.t, log.rw, level * rw0);
-  near_stop(log, level);
+  near_stop(log, eps_level);
   // After both stops, and a margin for the last steps below the thresholds.
   const double stop = std::max(log.slide_stop, log.spin_stop) * 1.05 + 0.001;
   std::size_t first = log.t.size();
@@ -125,8 +132,6 @@ void summarize(run_log& log, double v0, double rw0, double level) {
             std::max(log.drift, std::hypot(log.x[i] - log.x[first], log.y[i] - log.y[first]));
     }
 }
-
-constexpr double level = 1e-3;  // "stopped": below 1e-3 of the start value, and stays there
 
 run_log run_bullet(model m, double v0, double w0, double duration) {
   scene s(m, table_top());
@@ -193,7 +198,8 @@ double exact_ratio_at(double gamma, double v0, double w0, double stop, double fr
   const double v0s = v0 / u.velocity_scale(), w0s = w0 / u.spin_scale();
   const double ts = stop / u.time_scale();
   std::vector<double> times;
-  for (int k = 0; k <= 500; ++k) times.push_back(ts * (1 - std::pow(10.0, -k / 50.0)));
+  // 0.5 % steps of the time left: ε changes by less than 0.2 % per sample.
+  for (int k = 0; k <= 5000; ++k) times.push_back(ts * (1 - std::pow(10.0, -k / 500.0)));
   const auto samples = spinslide::trajectory(spinslide::uniform_disk<>(), gamma, v0s, w0s, times);
   const double start = std::hypot(v0s, w0s * u.spin_scale() * coin_radius / u.velocity_scale());
   for (const auto& m : samples) {
@@ -324,7 +330,7 @@ bool run_throw(const throw_case& c, double gamma, int index, FILE* f) {
   const double creep_bound = 1e-6;  // m/s
   const bool time_ok = std::fabs(p.slide_stop / e.slide_stop - 1) <= 0.01 &&
                        std::fabs(p.spin_stop / e.spin_stop - 1) <= 0.01;
-  const bool eps_ok = std::fabs(p.eps_near_stop / exact_eps - 1) <= 0.02;
+  const bool eps_ok = std::fabs(p.eps_near_stop / exact_eps - 1) <= 0.01;
   // No lift-off: contact in every step, the normal force over any 1 ms
   // within 5 % of mg, and the coin never 1 μm above its rest.  (Single steps
   // reach 1.7 mg, natively too: Bullet replaces the cylinder's manifold
@@ -366,7 +372,7 @@ int main(int argc, char** argv) {
       "units: v* = v/(mu sqrt(gR)) (%.4f m/s), omega* = omega sqrt(R/g)/mu (%.3f rad/s), t* = "
       "t sqrt(g/R) (%.4f s)\n"
       "stopped: below 1e-3 of the start value for good; eps = v/(R omega) at the first step "
-      "with s = sqrt(v^2 + (R omega)^2) <= 1e-3 s0 (else the last step before the stop), the "
+      "with s = sqrt(v^2 + (R omega)^2) <= 1e-2 s0 (else the last step before the stop), the "
       "exact one at the same s/s0\nN/mg: the largest summed normal force per step after the "
       "first 5 steps; >1.05: steps above 1.05 mg; 1ms N: the largest 1 ms average of N/mg; rise: "
       "the highest the centre rose above its rest; after: the largest speeds and the drift of the "

@@ -26,6 +26,8 @@
 
 #include <spinslide/contact_inputs.hpp>
 #include <spinslide/detail/checks.hpp>
+#include <spinslide/detail/impulse_frame.hpp>
+#include <spinslide/detail/impulse_in_frame.hpp>
 #include <spinslide/detail/product.hpp>
 #include <spinslide/detail/vector_access.hpp>
 #include <spinslide/limit_set.hpp>
@@ -57,13 +59,18 @@ struct [[deprecated(
 /// 2-component vector class, in the tangent plane's axes); `spin`: the
 /// relative angular velocity about the normal; `inverse_mass`: W over
 /// (v_x, v_y, ω), in the same axes; `contact`: a, Λ and μ.  Components
-/// finite, a > 0, Λ ≥ 0 and μ ≥ 0, all of the profile's value_type;
-/// otherwise a domain error.  `start`: where the contact's last step left
-/// the limit curve (the last result's curve(), or `curve_point<Real>{ε}` for
-/// a ratio alone; ratio ≥ 0, else a domain error; `{}`: none); it only
-/// speeds the search.  The result's `force` and `torque` are the impulse
-/// (P_x, P_y) and L.  No allocation: two 3×3 factorizations and, when it
-/// slips, a few evaluations of the profile.
+/// finite, a ≥ 0, Λ ≥ 0 and μ ≥ 0, all of the profile's value_type;
+/// otherwise a domain error, and so is a patch beyond 1/(16√κ ε_mach) times
+/// W's own length scale √((W_xx + W_yy)/(2W_ωω)) (1e13 times it in double at
+/// κ = 1e3): these are the only errors.  Every smaller patch is valid, down
+/// to a = 0, where the law is point friction (no angular impulse; a patch
+/// growing from nothing tends to it continuously: docs/theory.md §11, "A
+/// patch that starts at zero").  `start`: where the
+/// contact's last step left the limit curve (the last result's curve(), or
+/// `curve_point<Real>{ε}` for a ratio alone; ratio ≥ 0, else a domain error;
+/// `{}`: none); it only speeds the search.  The result's `force` and
+/// `torque` are the impulse (P_x, P_y) and L.  No allocation: two 3×3
+/// factorizations and, when it slips, a few evaluations of the profile.
 template <class Profile, class Vec2>
 friction_result<Vec2, typename Profile::value_type> impulse_friction(
     const Profile& profile, const Vec2& velocity, typename Profile::value_type spin,
@@ -86,7 +93,8 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
   const Real vy = checked(function, "velocity[1]", static_cast<Real>(detail::get<1>(velocity)),
                           argument_rule::finite, pol);
   const Real w = checked(function, "spin", spin, argument_rule::finite, pol);
-  const auto patch = detail::checked_patch(function, contact, pol);
+  const auto patch =
+      detail::checked_patch(function, contact, pol, argument_rule::finite_non_negative);
   const Real a = patch.radius, n = patch.normal, mu = patch.friction;
   const Real s0 = checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
   friction_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
@@ -110,11 +118,15 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
                 pol);
   const Real load = checked(function, "contact.normal*contact.friction", Real(mu * n),
                             argument_rule::finite, pol);
-  if (detail::any_reported(stop[0], stop[1], stop[2], load))
-    return reported(load + stop[0] + stop[1] + stop[2]);
+  // The largest angular impulse, μΛa⟨r⟩, must be a number too.
+  const Real spin_load =
+      checked(function, "contact.normal*contact.friction*contact.radius*<r>",
+              detail::product(load, a, Real(profile.mean_radius())), argument_rule::finite, pol);
+  if (detail::any_reported(stop[0], stop[1], stop[2], load, spin_load))
+    return reported(load + stop[0] + stop[1] + stop[2] + spin_load);
   if (load == 0 || (vx == 0 && vy == 0 && w == 0)) {
     out.sticking = vx == 0 && vy == 0 && w == 0;
-    if (!out.sticking) out.ratio = std::hypot(vx, vy) / (a * std::fabs(w));
+    if (!out.sticking) out.ratio = detail::slip_ratio(Real(std::hypot(vx, vy)), a, w);
     return out;
   }
   auto stuck = [&out, &stop]() {
@@ -124,41 +136,32 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
     out.torque = stop[2];
     return out;
   };
-  // (Divided by a, then by the load: μΛa itself may be subnormal.)
-  const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / a / load};
-  // SWS is W in the limit set's units: with a patch radius far from W's own
-  // length scale (a² W_ωω against W_vv) it can be too ill-conditioned to
-  // project in; a domain error says so.
-  // (‖SWS‖_F‖(SWS)⁻¹‖_F ≤ κ_F(W)·max(a, 1/a)²: the exact test only where
-  // that bound is not enough.)
-  using std::sqrt;
-  const Real spread = a > 1 ? a : Real(1 / a);
-  const bool surely = inverse_mass.condition_bound() * spread * spread *
-                          sqrt(std::numeric_limits<Real>::epsilon()) <=
-                      1;
-  // Sticking is decided on z's magnitudes (L₃ = {(|f|, |t|) ∈ L}); where
-  // they lie in L's inner triangle, before the metric is built (the
-  // projection's own first test).
+  // Sticking is decided on z's magnitudes (L₃ = {(|f|, |t|) ∈ L}) where
+  // they lie in L's inner triangle, in the limit set's units (divided by a,
+  // then by the load: μΛa itself may be subnormal), before any evaluation
+  // or metric.
   using std::fabs;
-  if (surely && detail::in_sticking_triangle(target[0], target[1], Real(fabs(target[2])),
-                                             Real(profile.mean_radius())))
+  if (a > 0 &&
+      detail::in_sticking_triangle(Real(stop[0] / load), Real(stop[1] / load),
+                                   Real(fabs(stop[2]) / a / load), Real(profile.mean_radius())))
     return stuck();
-  const Real scale[3] = {1, 1, a};
-  detail::matrix3<Real> metric{}, inverse{};
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) {
-      metric[i][j] = scale[i] * inverse_mass.entries()[i][j] * scale[j];
-      inverse[i][j] = inverse_mass.inverse()[i][j] / (scale[i] * scale[j]);
-    }
-  if (!surely && !detail::well_conditioned(metric, inverse)) {
+  const detail::impulse_frame<Real> frame =
+      detail::impulse_frame_for(inverse_mass, a, Real(2 / profile.mean_inverse_radius()));
+  if (frame.too_large)
     return reported(detail::raise_argument_error(
         function, "contact.radius",
-        "one for which the inverse mass in the limit set's units, diag(1, 1, a) W diag(1, 1, a), "
-        "has a condition number within 1/sqrt(epsilon) (6.7e7 in double)",
+        "at most 1/(16 sqrt(kappa) epsilon) times the inverse mass's own length scale "
+        "sqrt((W_xx + W_yy)/(2 W_ww)) (kappa its condition number; 1e13 times it in double "
+        "for kappa = 1e3)",
         a, pol));
-  }
+  if (frame.point) return detail::point_limit_result(out, inverse_mass, slip, a, load);
+  // In the frame's units (L = cτ), likewise.
+  const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / frame.c / load};
   const wrench_projection<Real> r =
-      detail::metric_projector<Profile>(profile, target, metric, inverse)(s0, &start);
+      frame.k == 1  // the profile's own curve: the one step of a coin's or a block's contact
+          ? detail::metric_projector<Profile>(profile, target, frame.metric, frame.inverse)(s0,
+                                                                                            &start)
+          : detail::project_in_frame(profile, frame, target, start, {inverse_mass, slip, load});
   if (r.sticking) return stuck();
   out.ratio = r.ratio;
   out.point = r.curve();

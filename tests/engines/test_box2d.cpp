@@ -111,3 +111,25 @@ TEST(Box2dAdapter, PureSpinAndPureSlideStopAtTheirClosedForms) {
     EXPECT_EQ(w.puck->GetLinearVelocity().Length(), 0.0f);
   }
 }
+
+// issue 27 - the adapter woke every body it touched each step, so a puck at
+// rest never slept.  Thrown and stopped, it now falls asleep as Box2D's own
+// bodies do (after b2_timeToSleep, 0.5 s, at rest), and stays asleep.
+TEST(Box2dAdapter, RegressionAPuckAtRestFallsAsleep) {
+  puck_world w;
+  table_friction table(gravity{g});
+  table.add(w.puck, puck_friction());
+  w.puck->SetLinearVelocity(b2Vec2(0.5f, 0.0f));
+  w.puck->SetAngularVelocity(5.0f);
+  int asleep_from = -1;
+  for (int i = 0; i < 3000; ++i) {
+    table.apply(dt);
+    w.world.Step(static_cast<float>(dt), 8, 3);
+    if (!w.puck->IsAwake() && asleep_from < 0) asleep_from = i;
+    if (asleep_from >= 0) {
+      EXPECT_FALSE(w.puck->IsAwake()) << "woke at step " << i;
+    }
+  }
+  EXPECT_GE(asleep_from, 0) << "the puck never fell asleep";
+  EXPECT_TRUE(table.sticking(0));
+}

@@ -13,9 +13,12 @@
 
 #include "../../examples/bullet_coin/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -304,4 +307,94 @@ TEST(BulletAdapter, FrictionBetweenTwoFreeBodiesKeepsTheirMomentum) {
   EXPECT_NEAR(n, press, 1e-3 * press);
   const double expected = coin_mu * press * (1 / coin_mass + 1 / plank_mass) * steps * coin_dt;
   EXPECT_NEAR(slip0 - slip(), expected, 1e-3 * expected);
+}
+
+namespace {
+
+struct stop_errors {
+  std::vector<double> relative;  // (Bullet's stop − the exact stop)/the exact stop
+  int never = 0;                 // throws not at rest within three exact stop times
+  int moved_again = 0;           // throws that moved again after coming to rest
+};
+
+// Random throws of the steel coin (v0* in [0.1, 2.1], ω0* in [0.1, 3.1])
+// stepped at `dt` with the plug-in, against the exact stop of the same throw
+// (simulate_throw's t*, the uniform disk at γ = 1/2): "at rest" is both
+// the horizontal speed and R|ω| below 1e-6 of their starts.
+stop_errors coin_stops(double dt, int throws, unsigned seed) {
+  const double thickness = 2 * coin_half_thickness;
+  const double mass = 7850 * pi * coin_radius * coin_radius * thickness;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  stop_errors out;
+  for (int k = 0; k < throws; ++k) {
+    const double vs = 0.1 + 2 * u(rng), ws = 0.1 + 3 * u(rng);
+    const double v0 = vs * coin_mu * std::sqrt(g * coin_radius),
+                 w0 = ws * coin_mu * std::sqrt(g / coin_radius);
+    bullet_scene::scene s(bullet_scene::friction::plugin, btVector3(0, 0, 0));
+    btCylinderShapeZ shape(btVector3(coin_radius, coin_radius, thickness / 2));
+    btRigidBody* coin = s.add(&shape, mass, btVector3(0, 0, thickness / 2));
+    bullet_scene::set_coin_friction(s, coin);
+    for (int i = 0; i < 300; ++i) s.step(1e-5);  // settle on the table
+    coin->setLinearVelocity(btVector3(v0, 0, coin->getLinearVelocity().z()));
+    coin->setAngularVelocity(btVector3(0, 0, w0));
+    const double exact =
+        spinslide::stop_time(spinslide::uniform_disk<>(), 0.5, vs, ws) * std::sqrt(coin_radius / g);
+    double stopped = -1;
+    bool again = false;
+    const int steps = static_cast<int>(3 * exact / dt) + 10;
+    for (int i = 1; i <= steps; ++i) {
+      s.step(dt);
+      const btVector3 v = coin->getLinearVelocity();
+      const double w = coin->getAngularVelocity().z();
+      EXPECT_TRUE(std::isfinite(v.x() + v.y() + v.z() + w));
+      const bool rest = std::hypot(v.x(), v.y()) < 1e-6 * v0 && std::fabs(w) < 1e-6 * w0;
+      if (rest && stopped < 0) stopped = i * dt;
+      if (!rest && stopped >= 0) {
+        again = true;
+        stopped = -1;
+      }
+    }
+    if (stopped < 0) {
+      ++out.never;
+      continue;
+    }
+    out.moved_again += again;
+    out.relative.push_back((stopped - exact) / exact);
+  }
+  std::sort(out.relative.begin(), out.relative.end());
+  return out;
+}
+
+double median(const std::vector<double>& sorted) { return sorted[sorted.size() / 2]; }
+
+}  // namespace
+
+// issue 27 - the patch centre was the impulse-weighted mean of Bullet's few
+// manifold points, which wandered 27 % of R off the coin's axis on average;
+// 2107 of 10 000 random throws stopped early (median −9.9 %), mostly at
+// Δt ≥ 1e-4 s.  A flat face's centre is now its geometry's (the centre of
+// mass projected on the contact plane).  Measured (this test's throws,
+// docs/engines.md): at Δt = 1e-5 s every stop within 0.1 % of exact; at
+// 1e-4 s none early beyond the step, median within 0.5 %, the slowest from
+// Bullet's normal impulse, which falls to a fifth of mg in some steps of a
+// 2 mm coin (also with Bullet's own friction); at 1e-3 s and 1/240 s that
+// loss of support makes the stops late by half or more (not held here).
+TEST(BulletAdapter, RegressionCoinStopsMatchTheExactOnes) {
+  const stop_errors fine = coin_stops(1e-5, 40, 27);
+  ASSERT_EQ(fine.never, 0);
+  EXPECT_EQ(fine.moved_again, 0);
+  EXPECT_GT(fine.relative.front(), -1e-3);
+  EXPECT_LT(fine.relative.back(), 1e-3);
+  const stop_errors coarse = coin_stops(1e-4, 200, 28);
+  for (const auto* e : {&fine, &coarse})
+    std::printf(
+        "coin stops: %zu throws, error %+.4f %% (first) %+.4f %% (median) %+.4f %% (last), "
+        "%d moved again, %d never at rest\n",
+        e->relative.size(), 100 * e->relative.front(), 100 * median(e->relative),
+        100 * e->relative.back(), e->moved_again, e->never);
+  ASSERT_EQ(coarse.never, 0);
+  EXPECT_LE(coarse.moved_again, 10);  // measured 5: Bullet's normal contact (see above)
+  EXPECT_GT(coarse.relative.front(), -0.01);
+  EXPECT_LT(std::fabs(median(coarse.relative)), 5e-3);
 }

@@ -167,19 +167,21 @@ bool any_reported(T... xs) {
 /// A contact's radius a, normal load (force or impulse) and μ, checked.
 template <class Real>
 struct patch_values {
-  Real radius;    ///< a > 0, finite
+  Real radius;    ///< a > 0 (≥ 0 for the impulse law), finite
   Real normal;    ///< N or Λ ≥ 0, finite
   Real friction;  ///< μ ≥ 0, finite
 };
 
 /// The named inputs of a contact (force_contact or impulse_contact:
 /// members radius, normal, friction, each with a `value`), checked; a
-/// reported error leaves its value NaN.
+/// reported error leaves its value NaN.  The radius by `radius_rule`
+/// (finite_non_negative for a law that takes a patch from nothing).
 template <class Contact, class Policy>
-auto checked_patch(const char* function, const Contact& c, const Policy& pol) {
+auto checked_patch(const char* function, const Contact& c, const Policy& pol,
+                   argument_rule radius_rule = argument_rule::finite_positive) {
   using Real = std::decay_t<decltype(c.radius.value)>;
   return patch_values<Real>{
-      checked(function, "contact.radius", c.radius.value, argument_rule::finite_positive, pol),
+      checked(function, "contact.radius", c.radius.value, radius_rule, pol),
       checked(function, "contact.normal", c.normal.value, argument_rule::finite_non_negative, pol),
       checked(function, "contact.friction", c.friction.value, argument_rule::finite_non_negative,
               pol)};

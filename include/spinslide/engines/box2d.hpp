@@ -22,6 +22,7 @@
 #define SPINSLIDE_ENGINES_BOX2D_HPP
 
 #include <box2d/box2d.h>
+#include <spinslide/engines/joint_pairs.hpp>
 #include <spinslide/engines/pair_friction.hpp>
 
 #include <array>
@@ -79,19 +80,28 @@ class table_friction {
 
   void apply_one(entry& e, double dt) const {
     b2Body& b = *e.body;
+    // A sleeping body is at rest: nothing to resist, and no impulse wakes
+    // it (a first version woke every body each step, so none ever slept).
+    if (!b.IsAwake()) {
+      e.sticking = true;
+      e.friction.forget();
+      return;
+    }
     const double m = b.GetMass();
+    if (!(m > 0)) return;  // static or kinematic: friction does not move it
     const b2Vec2 c = b.GetLocalCenter();
-    // GetInertia() is about the body's origin; W needs it about the centre.
+    // GetInertia() is about the body's origin; W needs it about the centre
+    // (0 for a body with fixed rotation: no spin response).
     const double inertia = static_cast<double>(b.GetInertia()) - m * (c.x * c.x + c.y * c.y);
-    const planar_metric<double> w(
-        detail::matrix3<double>{{{1 / m, 0, 0}, {0, 1 / m, 0}, {0, 0, 1 / inertia}}});
+    const planar_metric<double> w = engines::conditioned_metric(detail::matrix3<double>{
+        {{1 / m, 0, 0}, {0, 1 / m, 0}, {0, 0, inertia > 0 ? 1 / inertia : 0.0}}});
     const b2Vec2 v = b.GetLinearVelocity();
     const auto p = e.friction.impulse({v.x, v.y}, b.GetAngularVelocity(), w,
                                       normal_impulse<double>{m * gravity_ * dt}, 0.0);
     e.sticking = p.sticking;
     b.ApplyLinearImpulseToCenter(
-        b2Vec2(static_cast<float>(p.force[0]), static_cast<float>(p.force[1])), true);
-    b.ApplyAngularImpulse(static_cast<float>(p.torque), true);
+        b2Vec2(static_cast<float>(p.force[0]), static_cast<float>(p.force[1])), false);
+    b.ApplyAngularImpulse(static_cast<float>(p.torque), false);
   }
 
   double gravity_;

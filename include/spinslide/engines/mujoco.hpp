@@ -16,25 +16,28 @@
 /// solves their normal forces, and spinslide their friction.  Each step is
 /// mj_step1; the forward dynamics up to the constraint forces, which gives
 /// this step's normal forces (no lag) and the velocity each pair would have
-/// at the end of the step without friction; then, per pair, the
-/// velocity-level law of impulse_friction.hpp (exact stick; slip on the
-/// coupled limit set) in the pair's effective inverse mass W = JM⁻¹Jᵀ; the
-/// impulses, divided by the step, are added to qfrc_applied for mj_step2 and
-/// removed after it.  W does not know MuJoCo's other constraints (the normal
-/// contacts resist the tilt that a friction force below the centre of mass
-/// starts), so a sticking pair would keep a residual slip (a disk on a slope:
-/// 2.7 % of gΔt sin α per step, a steady creep of 4 μm/s): the constraints
-/// are solved again with the friction applied, and each pair's law is applied
-/// again to the velocity it would then have without friction, until every
-/// sticking pair's residual slip is below 1e-9 of its own scale (at most
-/// three such passes; one is typical).  The price is two to three constraint
-/// solves per step instead of one (warm-started).
+/// at the end of the step without friction; then all coupled pairs'
+/// friction impulses together (joint_pairs.hpp: block Gauss–Seidel, each
+/// block the velocity-level law of impulse_friction.hpp, exact stick or
+/// slip on the coupled limit set), in their joint inverse mass W = J H⁻¹ Jᵀ,
+/// where H = M + J_cᵀ D J_c adds to the mass matrix the stiffness of
+/// MuJoCo's active constraints (its soft contacts, joints and limits: the
+/// Hessian of its constraint solve), so that W sees how the other
+/// constraints respond to friction (a friction force below the centre of
+/// mass tilts the body against its normal contacts; two feet on one body
+/// push on each other through it).  The impulses, divided by the step, are
+/// added to qfrc_applied for mj_step2 and removed after it.  As MuJoCo's
+/// constraints are not linear (a contact may lift off), they are solved
+/// again with the friction applied, and the pairs again from the motion
+/// that solve leaves, until every sticking pair ends the step at rest to
+/// 1e-9 of its own scale (at most three such passes; none is typical).
 /// Needs the Euler or implicit integrator (mj_step1/mj_step2 do not split
 /// RK4).
 #ifndef SPINSLIDE_ENGINES_MUJOCO_HPP
 #define SPINSLIDE_ENGINES_MUJOCO_HPP
 
 #include <mujoco/mujoco.h>
+#include <spinslide/engines/joint_pairs.hpp>
 #include <spinslide/engines/pair_friction.hpp>
 
 #include <array>
@@ -71,6 +74,8 @@ struct pair_report {
   std::array<double, 3> normal{};  ///< the contact normal, from the first geom to the second
   bool sticking = false;           ///< the friction impulse stopped the pair's relative motion
   double ratio = 0;                ///< ε after the step (NaN when sticking or without contact)
+  std::array<double, 2> force{};   ///< the friction force on geom a, in the tangent axes [N]
+  double torque = 0;               ///< the friction torque on geom a about the normal [N m]
 };
 
 /// spinslide's coupled friction for chosen geom pairs of one MuJoCo model
@@ -83,13 +88,14 @@ class coupled_friction {
     const auto nv = static_cast<std::size_t>(model_->nv);
     jacobian_a_.assign(6 * nv, 0.0);
     jacobian_b_.assign(6 * nv, 0.0);
-    solved_.assign(3 * nv, 0.0);
     generalized_.assign(nv, 0.0);
+    row_.assign(nv, 0.0);
   }
 
   /// Couples geoms `a` and `b` with `friction`; returns the pair's index for
   /// report().  Both geoms must be frictionless (condim 1) and distinct;
-  /// otherwise std::invalid_argument.
+  /// otherwise std::invalid_argument.  A pair already coupled (in either
+  /// order) keeps its index and takes the new friction.
   std::size_t couple(geom_id a, geom_id b, const engines::pair_friction& friction) {
     const int ngeom = model_->ngeom;
     if (a.value < 0 || a.value >= ngeom || b.value < 0 || b.value >= ngeom || a.value == b.value)
@@ -103,6 +109,15 @@ class coupled_friction {
             " has condim " + std::to_string(model_->geom_condim[g]) +
             "; coupled geoms must be frictionless (condim=\"1\"), so that MuJoCo adds no "
             "friction of its own");
+    }
+    // A pair coupled again (in either order) gets the new friction: one rule
+    // with the Bullet adapter (a first version added it twice, doubling it).
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+      const coupled_pair& p = pairs_[i];
+      if ((p.a == a.value && p.b == b.value) || (p.a == b.value && p.b == a.value)) {
+        pairs_[i].friction = friction;
+        return i;
+      }
     }
     coupled_pair pair{a.value, b.value, friction};
     pair.rows.assign(3 * static_cast<std::size_t>(model_->nv), 0.0);
@@ -125,16 +140,36 @@ class coupled_friction {
     mj_fwdActuation(model_, data);
     mj_fwdAcceleration(model_, data);
     mj_fwdConstraint(model_, data);
-    for (auto& pair : pairs_) prepare(pair, data);
+    active_.clear();
+    for (std::size_t i = 0; i < pairs_.size(); ++i)
+      if (prepare(pairs_[i], data)) active_.push_back(i);
+    couple_active(data);
     impulses();
+    if (linear_update(data)) {  // mj_step2 without its constraint solve
+      mj_sensorAcc(model_, data);
+      mj_checkAcc(model_, data);
+      mj_Euler(model_, data);
+      return;
+    }
     for (int pass = 0; pass < max_corrections && !settled(data); ++pass) impulses();
     add_to(data->qfrc_applied, 1.0);
     mj_step2(model_, data);
     add_to(data->qfrc_applied, -1.0);
   }
 
-  /// The last step at pair `index` (as couple() returned it).
-  const pair_report& report(std::size_t index) const { return pairs_.at(index).report; }
+  /// The last step at pair `index` (as couple() returned it); an index
+  /// beyond the pairs coupled is std::out_of_range, naming both.
+  const pair_report& report(std::size_t index) const {
+    if (index >= pairs_.size())
+      throw std::out_of_range("spinslide::mujoco::coupled_friction::report: pair " +
+                              std::to_string(index) + ", but " + std::to_string(pairs_.size()) +
+                              " pairs are coupled");
+    return pairs_[index].report;
+  }
+
+  /// How the last step's joint solve of the pairs went (its last pass):
+  /// sweeps made, and whether they converged.
+  const engines::joint_outcome& last_solve() const { return last_solve_; }
 
   /// The generalized friction force of the last step (nv entries): the
   /// impulses divided by the time step.
@@ -151,8 +186,7 @@ class coupled_friction {
     bool active = false;       // in contact this step
     std::vector<double> rows;  // 3×nv: t1, t2 and spin rows of the relative motion
     vec3 free_motion{};        // the relative motion at the step's end without friction
-    planar_metric<double> inverse_mass{detail::matrix3<double>{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}};
-    vec3 impulse{};  // (P_x, P_y, L) on geom a's body
+    vec3 impulse{};            // (P_x, P_y, L) on geom a's body
   };
   static constexpr int max_corrections = 3;
 
@@ -220,9 +254,9 @@ class coupled_friction {
     }
   }
 
-  // This step's contacts, Jacobian rows, W and the relative motion at the
-  // end of the step without friction.
-  void prepare(coupled_pair& pair, mjData* data) {
+  // This step's contacts, Jacobian rows and the relative motion at the end
+  // of the step without friction; false if the pair is not in contact.
+  bool prepare(coupled_pair& pair, mjData* data) {
     gather(pair, data);
     pair_report& r = pair.report;
     const double n_length = std::sqrt(r.normal[0] * r.normal[0] + r.normal[1] * r.normal[1] +
@@ -230,24 +264,73 @@ class coupled_friction {
     pair.active = r.normal_force > 0 && n_length > 0;
     if (!pair.active) {
       pair.friction.forget();
+      pair.impulse = {0, 0, 0};
       r.ratio = std::nan("");
-      return;
+      return false;
     }
     for (std::size_t k = 0; k < 3; ++k) {
       r.centre[k] /= r.normal_force;
       r.normal[k] /= n_length;
     }
     relative_rows(pair, tangent_axes(r.normal), data);
-    const auto nv = static_cast<std::size_t>(model_->nv);
     pair.free_motion = end_of_step_motion(pair, data);
-    mj_solveM(model_, data, solved_.data(), pair.rows.data(), 3);
-    detail::matrix3<double> w{};
-    for (std::size_t row = 0; row < 3; ++row)
-      for (std::size_t col = 0; col < 3; ++col)
-        for (std::size_t j = 0; j < nv; ++j)
-          w[row][col] += pair.rows[row * nv + j] * solved_[col * nv + j];
-    pair.inverse_mass = planar_metric<double>(w);
     r.patch_radius = pair.friction.radius(r.penetration);
+    return true;
+  }
+
+  // True for a constraint row of MuJoCo's last solve that resists motion:
+  // in its quadratic zone (or in an elliptic cone, taken as quadratic), or,
+  // after a dual solver (whose states are not kept), carrying a force.
+  bool resisting(const mjData* data, int row) const {
+    if (mj_isDual(model_)) return data->efc_force[row] != 0;
+    const int state = data->efc_state[row];
+    return state == mjCNSTRSTATE_QUADRATIC || state == mjCNSTRSTATE_CONE;
+  }
+
+  // H = M + Σ D_r J_rᵀJ_r over the resisting rows, factorized, and the
+  // active pairs' joint inverse mass W = J H⁻¹ Jᵀ (3×3 blocks).
+  void couple_active(mjData* data) {
+    const auto nv = static_cast<std::size_t>(model_->nv);
+    const std::size_t n = active_.size();
+    coupling_.reset(n);
+    if (n == 0) return;
+    hessian_.assign(nv * nv, 0.0);
+    mj_fullM(model_, hessian_.data(), data->qM);
+    const bool sparse = mj_isSparse(model_);
+    for (int r = 0; r < data->nefc; ++r) {
+      if (!resisting(data, r)) continue;
+      std::fill(row_.begin(), row_.end(), 0.0);
+      if (sparse) {
+        const int start = data->efc_J_rowadr[r];
+        for (int k = 0; k < data->efc_J_rownnz[r]; ++k)
+          row_[static_cast<std::size_t>(data->efc_J_colind[start + k])] = data->efc_J[start + k];
+      } else {
+        std::copy(data->efc_J + static_cast<std::size_t>(r) * nv,
+                  data->efc_J + static_cast<std::size_t>(r + 1) * nv, row_.begin());
+      }
+      const double d = data->efc_D[r];
+      for (std::size_t i = 0; i < nv; ++i)
+        if (row_[i] != 0)
+          for (std::size_t j = 0; j < nv; ++j) hessian_[i * nv + j] += d * row_[i] * row_[j];
+    }
+    mju_cholFactor(hessian_.data(), model_->nv, mjMINVAL);
+    solved_.assign(3 * n * nv, 0.0);
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t row = 0; row < 3; ++row)
+        mju_cholSolve(solved_.data() + (3 * k + row) * nv, hessian_.data(),
+                      pairs_[active_[k]].rows.data() + row * nv, model_->nv);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) {
+        auto& block = coupling_.at(i, j);
+        const auto& rows = pairs_[active_[i]].rows;
+        for (std::size_t a = 0; a < 3; ++a)
+          for (std::size_t b = 0; b < 3; ++b) {
+            double sum = 0;
+            for (std::size_t q = 0; q < nv; ++q)
+              sum += rows[a * nv + q] * solved_[(3 * j + b) * nv + q];
+            block[a][b] = sum;
+          }
+      }
   }
 
   // The pair's relative motion at the end of the step, from qacc as it is.
@@ -261,50 +344,97 @@ class coupled_friction {
     return s;
   }
 
-  // Each active pair's impulse from its free motion, into generalized_.
+  // The active pairs' impulses from their free motions, solved together,
+  // into generalized_.
   void impulses() {
     std::fill(generalized_.begin(), generalized_.end(), 0.0);
     const auto nv = static_cast<std::size_t>(model_->nv);
     const double h = model_->opt.timestep;
-    for (auto& pair : pairs_) {
-      if (!pair.active) continue;
-      pair_report& r = pair.report;
-      const vec3& s = pair.free_motion;
-      const auto p =
-          pair.friction.impulse({s[0], s[1]}, s[2], pair.inverse_mass,
-                                normal_impulse<double>{r.normal_force * h}, r.penetration);
-      r.sticking = p.sticking;
-      r.ratio = p.ratio;
-      pair.impulse = {p.force[0], p.force[1], p.torque};
+    joint_.clear();
+    for (const std::size_t i : active_) {
+      coupled_pair& pair = pairs_[i];
+      joint_.push_back(engines::joint_pair{std::ref(pair.friction), pair.free_motion,
+                                           normal_impulse<double>{pair.report.normal_force * h},
+                                           pair.report.penetration});
+    }
+    last_solve_ = solver_.solve(joint_, coupling_);
+    for (std::size_t k = 0; k < active_.size(); ++k) {
+      coupled_pair& pair = pairs_[active_[k]];
+      pair.report.sticking = joint_[k].sticking;
+      pair.report.ratio = joint_[k].ratio;
+      pair.impulse = joint_[k].impulse;
+      pair.report.force = {pair.impulse[0] / h, pair.impulse[1] / h};
+      pair.report.torque = pair.impulse[2] / h;
       for (std::size_t row = 0; row < 3; ++row)
         for (std::size_t j = 0; j < nv; ++j)
           generalized_[j] += pair.rows[row * nv + j] * pair.impulse[row] / h;
     }
   }
 
+  // MuJoCo's constraint solve with the friction added, without solving: its
+  // primal problem with the friction's generalized force τ has the answer
+  // q̈ + H⁻¹τ wherever no constraint row changes its state (H is that
+  // problem's Hessian for the rows' states).  True, with q̈, the forces and
+  // the smooth force updated as MuJoCo's solve would leave them, if the
+  // states stayed (checked by mj_constraintUpdate at the new q̈); false
+  // (nothing to keep) for the implicit integrator, a dual solver, an
+  // elliptic cone's row in its cone, or a row that changed its state.
+  bool linear_update(mjData* data) {
+    if (model_->opt.integrator != mjINT_EULER || mj_isDual(model_) || active_.empty()) return false;
+    const int nv = model_->nv, nefc = data->nefc;
+    const auto n = static_cast<std::size_t>(nv);
+    states_.assign(data->efc_state, data->efc_state + nefc);
+    for (const int state : states_)
+      if (state == mjCNSTRSTATE_CONE) return false;
+    delta_.assign(n, 0.0);
+    mju_cholSolve(delta_.data(), hessian_.data(), generalized_.data(), nv);
+    acceleration_.assign(data->qacc, data->qacc + nv);
+    for (std::size_t i = 0; i < n; ++i) acceleration_[i] += delta_[i];
+    jar_.assign(static_cast<std::size_t>(nefc), 0.0);
+    mj_mulJacVec(model_, data, jar_.data(), acceleration_.data());
+    for (int r = 0; r < nefc; ++r) jar_[static_cast<std::size_t>(r)] -= data->efc_aref[r];
+    mj_constraintUpdate(model_, data, jar_.data(), nullptr, 0);
+    for (int r = 0; r < nefc; ++r)
+      if (data->efc_state[r] != states_[static_cast<std::size_t>(r)]) return false;
+    std::copy(acceleration_.begin(), acceleration_.end(), data->qacc);
+    std::copy(acceleration_.begin(), acceleration_.end(), data->qacc_warmstart);
+    mj_solveM(model_, data, delta_.data(), generalized_.data(), 1);
+    for (std::size_t i = 0; i < n; ++i) {
+      data->qfrc_smooth[i] += generalized_[i];
+      data->qacc_smooth[i] += delta_[i];
+    }
+    return true;
+  }
+
   // Solves MuJoCo's constraints with the friction applied; true if every
   // sticking pair then ends the step at rest (to 1e-9 of its free motion).
   // Otherwise each pair's free motion becomes the motion it would have
-  // without its friction impulse under that solve, for the next pass.
+  // without any pair's friction impulse under that solve (by W), for the
+  // next pass.
   bool settled(mjData* data) {
     add_to(data->qfrc_applied, 1.0);
     mj_fwdAcceleration(model_, data);
     mj_fwdConstraint(model_, data);
     add_to(data->qfrc_applied, -1.0);
     bool done = true;
-    for (auto& pair : pairs_) {
-      if (!pair.active) continue;
+    std::vector<vec3> ends;
+    for (const std::size_t i : active_) {
+      coupled_pair& pair = pairs_[i];
       const vec3 s = end_of_step_motion(pair, data);
       const double a = pair.report.patch_radius;
       const vec3& f = pair.free_motion;
       const double slip = std::hypot(s[0], s[1], a * s[2]);
       const double scale = std::hypot(f[0], f[1], a * f[2]);
       if (pair.report.sticking && slip > 1e-9 * scale) done = false;
-      const auto w = pair.inverse_mass.entries();
-      for (std::size_t row = 0; row < 3; ++row)
-        pair.free_motion[row] =
-            s[row] - (w[row][0] * pair.impulse[0] + w[row][1] * pair.impulse[1] +
-                      w[row][2] * pair.impulse[2]);
+      ends.push_back(s);
+    }
+    for (std::size_t i = 0; i < active_.size(); ++i) {
+      vec3 motion = ends[i];
+      for (std::size_t j = 0; j < active_.size(); ++j) {
+        const auto moved = detail::multiply(coupling_.at(i, j), pairs_[active_[j]].impulse);
+        for (std::size_t k = 0; k < 3; ++k) motion[k] -= moved[k];
+      }
+      pairs_[active_[i]].free_motion = motion;
     }
     return done;
   }
@@ -328,7 +458,14 @@ class coupled_friction {
 
   const mjModel* model_;
   std::vector<coupled_pair> pairs_;
-  std::vector<double> jacobian_a_, jacobian_b_, solved_, generalized_;
+  std::vector<double> jacobian_a_, jacobian_b_, solved_, generalized_, hessian_, row_;
+  std::vector<double> delta_, acceleration_, jar_;
+  std::vector<int> states_;
+  std::vector<std::size_t> active_;  // the pairs in contact this step
+  engines::pair_coupling coupling_{0};
+  std::vector<engines::joint_pair> joint_;
+  engines::joint_solver solver_;
+  engines::joint_outcome last_solve_;
 };
 
 }  // namespace mujoco

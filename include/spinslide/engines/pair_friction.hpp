@@ -33,18 +33,17 @@ using patch_profile = std::variant<uniform_disk<double>, hertz<double>, annulus<
 
 /// The patch radius of a curved contact from the engine's penetration depth δ:
 /// Hertz's a = √(R*δ), with R* = R₁R₂/(R₁ + R₂) the effective radius (a
-/// sphere on a plane: R* = R), and never below a minimum.  δ is the engine's,
-/// set by its contact softness (MuJoCo's solref/solimp: δ = 0.37 mm for a
-/// resting billiard ball) or by its solver's residual overlap (Bullet: about
-/// 1e-11 m), not by the materials' elasticity.  Where δ means little, set the
-/// minimum to the material's Hertz radius (3NR*/(4E*))^(1/3), or give a
-/// fixed patch_radius.
+/// sphere on a plane: R* = R), and never below a minimum (by default 0: a
+/// grazing contact, δ → 0, is point friction, to which the law tends as the
+/// patch grows from nothing).  δ is the engine's, set by its contact
+/// softness (MuJoCo's solref/solimp: δ = 0.37 mm for a resting billiard
+/// ball) or by its solver's residual overlap (Bullet: about 1e-11 m), not by
+/// the materials' elasticity.  Where δ means little, set the minimum to the
+/// material's Hertz radius (3NR*/(4E*))^(1/3), or give a fixed patch_radius.
 struct hertz_radius {
-  /// R* [m], and the smallest radius 1e-6 R* (a point contact has no torque
-  /// to couple, and the law needs a > 0).  Both checked by pair_friction.
-  explicit constexpr hertz_radius(double effective_radius)
-      : value(effective_radius), minimum(1e-6 * effective_radius) {}
-  /// R* [m], and the smallest radius `least` (finite, > 0).
+  /// R* [m] (finite, > 0; checked by pair_friction), no minimum radius.
+  explicit constexpr hertz_radius(double effective_radius) : value(effective_radius), minimum(0) {}
+  /// R* [m], and the smallest radius `least` (finite, ≥ 0).
   constexpr hertz_radius(double effective_radius, patch_radius<double> least)
       : value(effective_radius), minimum(least.value) {}
   double value;    ///< R*
@@ -57,21 +56,21 @@ struct hertz_radius {
 class pair_friction {
  public:
   /// A patch of fixed radius a: `profile` scaled to a, with friction
-  /// coefficient μ.  a finite and > 0, μ finite and ≥ 0; otherwise
-  /// std::domain_error.
+  /// coefficient μ.  a finite and ≥ 0 (0: point friction), μ finite and ≥
+  /// 0; otherwise std::domain_error.
   pair_friction(const patch_profile& profile, patch_radius<double> radius,
                 friction_coefficient<double> friction)
       : profile_(profile),
-        fixed_radius_(check(radius.value, "patch radius", rule::finite_positive)),
+        fixed_radius_(check(radius.value, "patch radius", rule::finite_non_negative)),
         friction_(check(friction.value, "friction coefficient", rule::finite_non_negative)) {}
 
-  /// A patch whose radius follows the penetration (hertz_radius).  R* and
-  /// the minimum finite and > 0, μ finite and ≥ 0; otherwise
-  /// std::domain_error.
+  /// A patch whose radius follows the penetration (hertz_radius).  R*
+  /// finite and > 0, the minimum finite and ≥ 0, μ finite and ≥ 0;
+  /// otherwise std::domain_error naming the value passed.
   pair_friction(const patch_profile& profile, hertz_radius rule_of_radius,
                 friction_coefficient<double> friction)
       : profile_(profile),
-        fixed_radius_(check(rule_of_radius.minimum, "minimum radius", rule::finite_positive)),
+        fixed_radius_(check(rule_of_radius.minimum, "minimum radius", rule::finite_non_negative)),
         effective_radius_(check(rule_of_radius.value, "effective radius", rule::finite_positive)),
         friction_(check(friction.value, "friction coefficient", rule::finite_non_negative)) {}
 

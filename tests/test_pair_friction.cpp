@@ -1,0 +1,109 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+// engines::pair_friction, the engine-independent half of every adapter
+// (issue 27: built and tested without any engine): its settings' checks,
+// its radius rule (fixed, or Hertz's √(R*δ) from 0 or a floor), exact stick
+// and slide against closed forms.
+
+#include <gtest/gtest.h>
+
+#include <spinslide/engines/pair_friction.hpp>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+using spinslide::friction_coefficient;
+using spinslide::patch_radius;
+using spinslide::engines::hertz_radius;
+using spinslide::engines::pair_friction;
+
+constexpr double pi = 3.14159265358979323846;
+
+pair_friction disk_friction(double mu = 0.2) {
+  return pair_friction(spinslide::uniform_disk<>(), patch_radius<double>{0.06},
+                       friction_coefficient<double>{mu});
+}
+
+}  // namespace
+
+TEST(PairFriction, RefusesBadSettings) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const double a : {-1e-12, -1.0, nan, inf})
+    EXPECT_THROW(pair_friction(spinslide::uniform_disk<>(), patch_radius<double>{a},
+                               friction_coefficient<double>{0.2}),
+                 std::domain_error)
+        << a;
+  for (const double mu : {-0.1, nan, inf})
+    EXPECT_THROW(pair_friction(spinslide::uniform_disk<>(), patch_radius<double>{0.01},
+                               friction_coefficient<double>{mu}),
+                 std::domain_error)
+        << mu;
+  for (const double r : {0.0, -1.0, nan})
+    EXPECT_THROW(
+        pair_friction(spinslide::hertz<>(), hertz_radius{r}, friction_coefficient<double>{0.2}),
+        std::domain_error)
+        << r;
+  // The message names the value passed (issue 27: hertz_radius{-0.03} was
+  // reported as "minimum radius = -3e-08").
+  try {
+    pair_friction(spinslide::hertz<>(), hertz_radius{-0.03}, friction_coefficient<double>{0.2});
+    ADD_FAILURE();
+  } catch (const std::domain_error& e) {
+    EXPECT_NE(std::string(e.what()).find("effective radius = -0.0"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PairFriction, RadiusIsFixedOrHertzs) {
+  const pair_friction fixed = disk_friction();
+  EXPECT_EQ(fixed.radius(0.0), 0.06);
+  EXPECT_EQ(fixed.radius(1e-3), 0.06);
+  const pair_friction curved(spinslide::hertz<>(), hertz_radius{0.02},
+                             friction_coefficient<double>{0.3});
+  EXPECT_DOUBLE_EQ(curved.radius(2e-6), std::sqrt(0.02 * 2e-6));
+  EXPECT_EQ(curved.radius(0.0), 0.0);   // grazing: point friction
+  EXPECT_EQ(curved.radius(-1.0), 0.0);  // separated: no depth
+  const pair_friction floored(spinslide::hertz<>(), hertz_radius(0.02, patch_radius<double>{1e-4}),
+                              friction_coefficient<double>{0.3});
+  EXPECT_EQ(floored.radius(0.0), 1e-4);
+  EXPECT_DOUBLE_EQ(floored.radius(1e-3), std::sqrt(0.02 * 1e-3));
+  EXPECT_EQ(curved.friction(), 0.3);
+}
+
+TEST(PairFriction, StickingStopsTheContactExactly) {
+  // W = diag(2, 2, 50): the impulse that stops (0.01, 0, 0.01) is
+  // -(0.005, 0, 0.0002): (f, t) = (0.25, 0.17) in units of μΛ = 0.02 and μΛa, inside the set.
+  pair_friction f = disk_friction();
+  const spinslide::planar_metric<double> w({{{2, 0, 0}, {0, 2, 0}, {0, 0, 50}}});
+  const auto p = f.impulse({0.01, 0.0}, 0.01, w, spinslide::normal_impulse<double>{0.1}, 0.0);
+  EXPECT_TRUE(p.sticking);
+  EXPECT_DOUBLE_EQ(p.force[0], -0.005);
+  EXPECT_EQ(p.force[1], 0.0);
+  EXPECT_DOUBLE_EQ(p.torque, -0.0002);
+}
+
+TEST(PairFriction, SlidingFollowsTheProfile) {
+  // Pure sliding far beyond the cap: the force is μΛ along -v for both
+  // profiles (F(∞) = 1), and the angular impulse a·μΛ·T(ε) differs with the
+  // profile.  A light W keeps the motion sliding.
+  const spinslide::planar_metric<double> w({{{1e-3, 0, 0}, {0, 1e-3, 0}, {0, 0, 1e-3}}});
+  pair_friction disk = disk_friction();
+  pair_friction sphere(spinslide::hertz<>(), patch_radius<double>{0.06},
+                       friction_coefficient<double>{0.2});
+  const auto pd = disk.impulse({1.0, 0.0}, 0.0, w, spinslide::normal_impulse<double>{1.0}, 0.0);
+  const auto ps = sphere.impulse({1.0, 0.0}, 0.0, w, spinslide::normal_impulse<double>{1.0}, 0.0);
+  EXPECT_FALSE(pd.sticking);
+  EXPECT_NEAR(pd.force[0], -0.2, 1e-12);
+  EXPECT_NEAR(ps.force[0], -0.2, 1e-12);
+  // Spinning in place: |L| = μΛ a T(0): 2/3 for the disk, 3π/16 for Hertz.
+  const auto qd = disk.impulse({0.0, 0.0}, 10.0, w, spinslide::normal_impulse<double>{1.0}, 0.0);
+  const auto qs = sphere.impulse({0.0, 0.0}, 10.0, w, spinslide::normal_impulse<double>{1.0}, 0.0);
+  EXPECT_NEAR(qd.torque, -0.2 * 0.06 * 2.0 / 3.0, 1e-14);
+  EXPECT_NEAR(qs.torque, -0.2 * 0.06 * 3 * pi / 16, 1e-14);
+}
