@@ -226,71 +226,112 @@ bool accepted(const Matrix& m) {
   }
 }
 
+// One random case: W (its angular row and column divided by ρ), the slip
+// and the contact.
+template <class Real>
+struct random_case {
+  planar_metric<Real> w;
+  Real rho, a, vx, vy, spin, load;
+};
+
+template <class Real>
+random_case<Real> draw(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1, 1), u01(0, 1);
+  typename planar_metric<Real>::matrix m{};
+  double rho = 1;
+  do {  // until planar_metric accepts the condition (within 1/√ε_mach)
+    const matrix md = spinslide_test::random_spd_with_condition(rng, std::pow(10.0, 3 * u01(rng)));
+    rho = std::pow(10.0, 3 * u(rng));
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j)
+        m[i][j] = Real(md[i][j] / (i == 2 ? rho : 1.0) / (j == 2 ? rho : 1.0));
+  } while (!accepted(m));
+  // a from 0 and 1e-40 to 1e3 times W's own length scale (beyond 1/(16√κ
+  // ε_mach) of it, 5e5/√κ in float, a patch is a domain error).
+  const double own = std::sqrt(static_cast<double>((m[0][0] + m[1][1]) / (2 * m[2][2])));
+  const Real a = u01(rng) < 0.05 ? Real(0) : Real(own * std::pow(10.0, -40 + 43 * u01(rng)));
+  const Real vx = Real(u(rng)), vy = Real(u(rng)), spin = Real(u(rng) / rho);
+  return {planar_metric<Real>(m), Real(rho), a, vx, vy, spin, Real(std::pow(10.0, 2 * u(rng)))};
+}
+
+// The slip after the impulse p, in long double.
+template <class Real>
+std::array<long double, 3> slip_after(const planar_metric<Real>& w,
+                                      const std::array<long double, 3>& s,
+                                      const std::array<long double, 3>& p) {
+  std::array<long double, 3> after{};
+  for (std::size_t i = 0; i < 3; ++i)
+    after[i] =
+        s[i] + w.entries()[i][0] * p[0] + w.entries()[i][1] * p[1] + w.entries()[i][2] * p[2];
+  return after;
+}
+
+template <class Real>
+long double energy_of(const planar_metric<Real>& w, const std::array<long double, 3>& s) {
+  long double e = 0;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) e += s[i] * w.inverse()[i][j] * s[j];
+  return e;
+}
+
+// The law's conditions at a slip after the step that is resolved (not
+// nearly stopped: its ratio and direction carry the impulse's error times
+// W, about κ ε_mach of s): |P| = μΛ𝓕(ε), |L| = μΛa𝓣(ε) at its own ratio,
+// against it.  False if the case is not resolved.
+template <class Real>
+bool law_holds(const random_case<Real>& c, const friction_result<std::array<Real, 2>, Real>& r,
+               const std::array<long double, 3>& s, const std::array<long double, 3>& p,
+               const std::array<long double, 3>& after, double tolerance) {
+  const long double speed = std::hypot(after[0], after[1]);
+  const long double resolved = 10 * std::sqrt(tolerance);
+  if (speed < resolved * std::hypot(s[0], s[1]) || std::fabs(after[2]) < resolved * std::fabs(s[2]))
+    return false;
+  const hertz<Real> sphere;
+  const long double bound = 0.5L * c.load;
+  const Real ratio = Real(speed / (c.a * std::fabs(after[2])));
+  EXPECT_NEAR(static_cast<double>(r.ratio / ratio), 1, 1e5 * tolerance);
+  const auto ft = sphere.force_torque(ratio);
+  EXPECT_NEAR(static_cast<double>(std::hypot(p[0], p[1]) / bound), double(ft.force),
+              1e3 * tolerance);
+  EXPECT_NEAR(static_cast<double>(std::fabs(p[2]) / (bound * c.a)), double(ft.torque),
+              1e3 * tolerance);
+  EXPECT_LE(static_cast<double>(p[0] * after[0] + p[1] * after[1]), 0);
+  EXPECT_LE(static_cast<double>(p[2] * after[2]), 0);
+  return true;
+}
+
+// The checks of one case: a finite impulse inside the set that leaves no
+// more kinetic energy; where the set is thick (a ≥ 1e-3 of W's scale) and
+// the slip resolved, the law's conditions.  True if those were checked.
+template <class Real>
+bool check_case(const random_case<Real>& c, const friction_result<std::array<Real, 2>, Real>& r,
+                double tolerance) {
+  const hertz<Real> sphere;
+  const std::array<long double, 3> s{c.vx, c.vy, c.spin}, p{r.force[0], r.force[1], r.torque};
+  EXPECT_TRUE(std::isfinite(static_cast<double>(p[0] + p[1] + p[2])));
+  const auto after = slip_after(c.w, s, p);
+  EXPECT_LE(energy_of(c.w, after), energy_of(c.w, s) * (1 + tolerance)) << "a = " << c.a;
+  const long double bound = 0.5L * c.load;
+  EXPECT_LE(std::hypot(p[0], p[1]), bound * (1 + tolerance));
+  EXPECT_LE(std::fabs(p[2]), bound * c.a * sphere.mean_radius() * (1 + tolerance));
+  const auto& e = c.w.entries();
+  const double own = std::sqrt(static_cast<double>((e[0][0] + e[1][1]) / (2 * e[2][2])));
+  return !r.sticking && c.a >= 1e-3 * own && law_holds(c, r, s, p, after, tolerance);
+}
+
 template <class Real>
 void random_patches(int count, double tolerance) {
   std::mt19937_64 rng(270);
-  std::uniform_real_distribution<double> u(-1, 1), u01(0, 1);
   const hertz<Real> sphere;
   int checked = 0;
   for (int n = 0; n < count; ++n) {
-    typename planar_metric<Real>::matrix m{};
-    double rho = 1;
-    do {  // until planar_metric accepts the condition (within 1/√ε_mach)
-      matrix md = spinslide_test::random_spd_with_condition(rng, std::pow(10.0, 3 * u01(rng)));
-      rho = std::pow(10.0, 3 * u(rng));
-      for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j)
-          m[i][j] = Real(md[i][j] / (i == 2 ? rho : 1.0) / (j == 2 ? rho : 1.0));
-    } while (!accepted(m));
-    const planar_metric<Real> w(m);
-    // a from 0 and 1e-40 to 1e3 times W's own length scale (beyond 1/(16√κ
-    // ε_mach) of it, 5e5/√κ in float, a patch is a domain error).
-    const double own = std::sqrt(static_cast<double>((m[0][0] + m[1][1]) / (2 * m[2][2])));
-    const Real a = u01(rng) < 0.05 ? Real(0) : Real(own * std::pow(10.0, -40 + 43 * u01(rng)));
-    const Real vx = Real(u(rng)), vy = Real(u(rng)), spin = Real(u(rng) / rho);
-    const Real load = Real(std::pow(10.0, 2 * u(rng)));
-    const auto r =
-        impulse_friction(sphere, std::array<Real, 2>{vx, vy}, spin, w,
-                         impulse_contact<Real>{patch_radius<Real>{a}, normal_impulse<Real>{load},
-                                               friction_coefficient<Real>{Real(0.5)}});
-    const long double s[3] = {vx, vy, spin}, p[3] = {r.force[0], r.force[1], r.torque};
-    ASSERT_TRUE(std::isfinite(static_cast<double>(p[0] + p[1] + p[2]))) << n;
-    long double after[3], e0 = 0, e1 = 0;
-    for (std::size_t i = 0; i < 3; ++i)
-      after[i] =
-          s[i] + w.entries()[i][0] * p[0] + w.entries()[i][1] * p[1] + w.entries()[i][2] * p[2];
-    for (std::size_t i = 0; i < 3; ++i)
-      for (std::size_t j = 0; j < 3; ++j) {
-        e0 += s[i] * w.inverse()[i][j] * s[j];
-        e1 += after[i] * w.inverse()[i][j] * after[j];
-      }
-    EXPECT_LE(e1, e0 * (1 + tolerance)) << n << ": a = " << a;
-    const long double bound = 0.5L * load;
-    EXPECT_LE(std::hypot(p[0], p[1]), bound * (1 + tolerance)) << n;
-    EXPECT_LE(std::fabs(p[2]), bound * a * sphere.mean_radius() * (1 + tolerance)) << n;
-    const double c = std::sqrt(
-        static_cast<double>((w.entries()[0][0] + w.entries()[1][1]) / (2 * w.entries()[2][2])));
-    if (r.sticking || a < 1e-3 * c) continue;
-    const long double speed = std::hypot(after[0], after[1]);
-    // The slip after the step has the impulse's error times W (about κ ε_mach
-    // of s): a slip nearly stopped gives its ratio and direction to fewer
-    // digits, and is left out.
-    const long double resolved = 10 * std::sqrt(tolerance);
-    if (speed < resolved * std::hypot(s[0], s[1]) ||
-        std::fabs(after[2]) < resolved * std::fabs(s[2]))
-      continue;
-    ++checked;
-    const Real ratio = Real(speed / (a * std::fabs(after[2])));
-    EXPECT_NEAR(static_cast<double>(r.ratio / ratio), 1, 1e5 * tolerance) << n;
-    const auto ft = sphere.force_torque(ratio);
-    EXPECT_NEAR(static_cast<double>(std::hypot(p[0], p[1]) / bound), double(ft.force),
-                1e3 * tolerance)
-        << n;
-    EXPECT_NEAR(static_cast<double>(std::fabs(p[2]) / (bound * a)), double(ft.torque),
-                1e3 * tolerance)
-        << n;
-    EXPECT_LE(static_cast<double>(p[0] * after[0] + p[1] * after[1]), 0) << n;
-    EXPECT_LE(static_cast<double>(p[2] * after[2]), 0) << n;
+    const random_case<Real> c = draw<Real>(rng);
+    const auto r = impulse_friction(
+        sphere, std::array<Real, 2>{c.vx, c.vy}, c.spin, c.w,
+        impulse_contact<Real>{patch_radius<Real>{c.a}, normal_impulse<Real>{c.load},
+                              friction_coefficient<Real>{Real(0.5)}});
+    SCOPED_TRACE(n);
+    checked += check_case(c, r, tolerance) ? 1 : 0;
   }
   EXPECT_GE(checked, count / 30);
 }

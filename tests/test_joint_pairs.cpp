@@ -150,6 +150,7 @@ TEST(JointPairs, NoFeasibleNeighbourLeavesLessEnergy) {
     const auto outcome = engines::solve_jointly(pairs, w, {1e-12, 2000});
     EXPECT_TRUE(outcome.converged) << n << ": " << outcome.sweeps;
     std::vector<vec3> best;
+    best.reserve(pairs.size());
     for (const auto& p : pairs) best.push_back(p.impulse);
     const double e = energy(w, best, s);
     for (int trial = 0; trial < 3000; ++trial) {

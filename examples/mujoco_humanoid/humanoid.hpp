@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -134,7 +135,8 @@ inline spinslide::engines::pair_friction friction_of(const mjModel* m, int geom)
     return spinslide::engines::pair_friction(spinslide::uniform_disk<>(),
                                              spinslide::patch_radius<double>{foot_patch}, mu);
   return spinslide::engines::pair_friction(
-      spinslide::hertz<>(), spinslide::engines::hertz_radius{m->geom_size[3 * geom]}, mu);
+      spinslide::hertz<>(),
+      spinslide::engines::hertz_radius{m->geom_size[3 * static_cast<std::size_t>(geom)]}, mu);
 }
 
 // A humanoid scene: the model, its data and, for the coupled model, the
@@ -166,6 +168,14 @@ struct scene {
     return data->energy[0] + data->energy[1];
   }
   int body(const char* name) const { return mj_name2id(model.get(), mjOBJ_BODY, name); }
+  // A body's position (3 entries) and its applied force and torque (6).
+  const mjtNum* position(int b) const { return data->xpos + 3 * static_cast<std::size_t>(b); }
+  mjtNum* applied(int b) { return data->xfrc_applied + 6 * static_cast<std::size_t>(b); }
+  // A body's turn about the vertical [rad].
+  double yaw(int b) const {
+    const mjtNum* r = data->xmat + 9 * static_cast<std::size_t>(b);
+    return std::atan2(r[3], r[0]);
+  }
   // `seconds` of steps.
   void run(double seconds) {
     const int steps = static_cast<int>(std::lround(seconds / time_step));

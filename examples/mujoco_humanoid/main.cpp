@@ -55,8 +55,8 @@ double sole_shift(const humanoid::scene& s, const std::vector<double>& from) {
   int k = 0;
   for (const char* foot : {"left_foot", "right_foot"}) {
     const int b = s.body(foot);
-    most = std::max(most, std::hypot(s.data->xpos[3 * b] - from[2 * k],
-                                     s.data->xpos[3 * b + 1] - from[2 * k + 1]));
+    most = std::max(most,
+                    std::hypot(s.position(b)[0] - from[2 * k], s.position(b)[1] - from[2 * k + 1]));
     ++k;
   }
   return most;
@@ -66,8 +66,8 @@ std::vector<double> soles(const humanoid::scene& s) {
   std::vector<double> at;
   for (const char* foot : {"left_foot", "right_foot"}) {
     const int b = s.body(foot);
-    at.push_back(s.data->xpos[3 * b]);
-    at.push_back(s.data->xpos[3 * b + 1]);
+    at.push_back(s.position(b)[0]);
+    at.push_back(s.position(b)[1]);
   }
   return at;
 }
@@ -112,9 +112,9 @@ row measure(const friction_model& f, std::vector<double>& fall_trace,
     s.run(3);
     const auto from = soles(s);
     const int torso = s.body("torso");
-    s.data->xfrc_applied[6 * torso] = 300;
+    s.applied(torso)[0] = 300;
     s.run(0.2);
-    s.data->xfrc_applied[6 * torso] = 0;
+    s.applied(torso)[0] = 0;
     r.push_rise = s.largest_rise(4);
     r.push_slide = sole_shift(s, from);
   }
@@ -130,18 +130,16 @@ row measure(const friction_model& f, std::vector<double>& fall_trace,
     humanoid::scene s(f);
     s.run(3);
     const int torso = s.body("torso"), pelvis = s.body("pelvis");
-    const double yaw0 = std::atan2(s.data->xmat[9 * pelvis + 3], s.data->xmat[9 * pelvis]);
-    s.data->xfrc_applied[6 * torso + 5] = 30;
+    const double yaw0 = s.yaw(pelvis);
+    s.applied(torso)[5] = 30;
     for (int i = 0; i < 750; ++i) {
       s.step();
       if (i == 375) r.pivot_torque = sole_torque(s);
-      if (i % 10 == 0)
-        pivot_trace.push_back(std::atan2(s.data->xmat[9 * pelvis + 3], s.data->xmat[9 * pelvis]) -
-                              yaw0);
+      if (i % 10 == 0) pivot_trace.push_back(s.yaw(pelvis) - yaw0);
     }
-    s.data->xfrc_applied[6 * torso + 5] = 0;
+    s.applied(torso)[5] = 0;
     s.run(1);
-    r.pivot_turn = std::atan2(s.data->xmat[9 * pelvis + 3], s.data->xmat[9 * pelvis]) - yaw0;
+    r.pivot_turn = s.yaw(pelvis) - yaw0;
   }
   return r;
 }

@@ -23,9 +23,9 @@ std::vector<double> soles(const humanoid::scene& s) {
   std::vector<double> at;
   for (const char* foot : {"left_foot", "right_foot"}) {
     const int b = s.body(foot);
-    at.push_back(s.data->xpos[3 * b]);  // where it stands, and its turn about the vertical
-    at.push_back(s.data->xpos[3 * b + 1]);
-    at.push_back(std::atan2(s.data->xmat[9 * b + 3], s.data->xmat[9 * b]));
+    at.push_back(s.position(b)[0]);  // where it stands, and its turn about the vertical
+    at.push_back(s.position(b)[1]);
+    at.push_back(s.yaw(b));
   }
   return at;
 }
@@ -94,9 +94,9 @@ TEST(MujocoHumanoid, EnergyRisesNoMoreThanWithMuJoCosFriction) {
     humanoid::scene s(f);
     s.run(3);
     const int torso = s.body("torso");
-    s.data->xfrc_applied[6 * torso] = 300;
+    s.applied(torso)[0] = 300;
     s.run(0.2);
-    s.data->xfrc_applied[6 * torso] = 0;
+    s.applied(torso)[0] = 0;
     return s.largest_rise(3);
   };
   auto fall = [](const humanoid::friction_model& f) {
@@ -120,8 +120,8 @@ TEST(MujocoHumanoid, SolesResistPivotingWithTheirSpinFriction) {
   humanoid::scene s(humanoid::coupled);
   s.run(3);
   const int torso = s.body("torso"), pelvis = s.body("pelvis");
-  auto yaw = [&] { return std::atan2(s.data->xmat[9 * pelvis + 3], s.data->xmat[9 * pelvis]); };
-  s.data->xfrc_applied[6 * torso + 5] = 30;
+  auto yaw = [&] { return s.yaw(pelvis); };
+  s.applied(torso)[5] = 30;
   s.run(1);
   double most = 0;
   for (int i = 0; i < 500; ++i) {

@@ -287,50 +287,67 @@ class coupled_friction {
     return state == mjCNSTRSTATE_QUADRATIC || state == mjCNSTRSTATE_CONE;
   }
 
-  // H = M + Σ D_r J_rᵀJ_r over the resisting rows, factorized, and the
-  // active pairs' joint inverse mass W = J H⁻¹ Jᵀ (3×3 blocks).
+  // The active pairs' joint inverse mass W = J H⁻¹ Jᵀ (3×3 blocks), H the
+  // Hessian of MuJoCo's constraint solve (hessian()).
   void couple_active(mjData* data) {
     const auto nv = static_cast<std::size_t>(model_->nv);
     const std::size_t n = active_.size();
     coupling_.reset(n);
     if (n == 0) return;
-    hessian_.assign(nv * nv, 0.0);
-    mj_fullM(model_, hessian_.data(), data->qM);
-    const bool sparse = mj_isSparse(model_);
-    for (int r = 0; r < data->nefc; ++r) {
-      if (!resisting(data, r)) continue;
-      std::fill(row_.begin(), row_.end(), 0.0);
-      if (sparse) {
-        const int start = data->efc_J_rowadr[r];
-        for (int k = 0; k < data->efc_J_rownnz[r]; ++k)
-          row_[static_cast<std::size_t>(data->efc_J_colind[start + k])] = data->efc_J[start + k];
-      } else {
-        std::copy(data->efc_J + static_cast<std::size_t>(r) * nv,
-                  data->efc_J + static_cast<std::size_t>(r + 1) * nv, row_.begin());
-      }
-      const double d = data->efc_D[r];
-      for (std::size_t i = 0; i < nv; ++i)
-        if (row_[i] != 0)
-          for (std::size_t j = 0; j < nv; ++j) hessian_[i * nv + j] += d * row_[i] * row_[j];
-    }
-    mju_cholFactor(hessian_.data(), model_->nv, mjMINVAL);
+    hessian(data);
     solved_.assign(3 * n * nv, 0.0);
     for (std::size_t k = 0; k < n; ++k)
       for (std::size_t row = 0; row < 3; ++row)
         mju_cholSolve(solved_.data() + (3 * k + row) * nv, hessian_.data(),
                       pairs_[active_[k]].rows.data() + row * nv, model_->nv);
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < n; ++j) {
-        auto& block = coupling_.at(i, j);
-        const auto& rows = pairs_[active_[i]].rows;
-        for (std::size_t a = 0; a < 3; ++a)
-          for (std::size_t b = 0; b < 3; ++b) {
-            double sum = 0;
-            for (std::size_t q = 0; q < nv; ++q)
-              sum += rows[a * nv + q] * solved_[(3 * j + b) * nv + q];
-            block[a][b] = sum;
-          }
+      for (std::size_t j = 0; j < n; ++j) coupling_.at(i, j) = block(i, j);
+  }
+
+  // H = M + Σ D_r J_rᵀJ_r over the resisting rows, factorized in place.
+  void hessian(const mjData* data) {
+    const auto nv = static_cast<std::size_t>(model_->nv);
+    hessian_.assign(nv * nv, 0.0);
+    mj_fullM(model_, hessian_.data(), data->qM);
+    for (int r = 0; r < data->nefc; ++r) {
+      if (!resisting(data, r)) continue;
+      constraint_row(data, r);
+      const double d = data->efc_D[r];
+      for (std::size_t i = 0; i < nv; ++i) {
+        if (row_[i] == 0) continue;
+        for (std::size_t j = 0; j < nv; ++j) hessian_[i * nv + j] += d * row_[i] * row_[j];
       }
+    }
+    mju_cholFactor(hessian_.data(), model_->nv, mjMINVAL);
+  }
+
+  // Row r of MuJoCo's constraint Jacobian, dense, into row_.
+  void constraint_row(const mjData* data, int r) {
+    const auto nv = static_cast<std::size_t>(model_->nv);
+    std::fill(row_.begin(), row_.end(), 0.0);
+    if (mj_isSparse(model_)) {
+      const int start = data->efc_J_rowadr[r];
+      for (int k = 0; k < data->efc_J_rownnz[r]; ++k)
+        row_[static_cast<std::size_t>(data->efc_J_colind[start + k])] = data->efc_J[start + k];
+    } else {
+      const mjtNum* from = data->efc_J + static_cast<std::size_t>(r) * nv;
+      std::copy(from, from + nv, row_.begin());
+    }
+  }
+
+  // W_ij = J_i (H⁻¹ J_jᵀ), from the solved columns.
+  engines::pair_coupling::block block(std::size_t i, std::size_t j) const {
+    const auto nv = static_cast<std::size_t>(model_->nv);
+    const auto& rows = pairs_[active_[i]].rows;
+    engines::pair_coupling::block out{};
+    for (std::size_t a = 0; a < 3; ++a)
+      for (std::size_t b = 0; b < 3; ++b) {
+        double sum = 0;
+        for (std::size_t q = 0; q < nv; ++q)
+          sum += rows[a * nv + q] * solved_[(3 * j + b) * nv + q];
+        out[a][b] = sum;
+      }
+    return out;
   }
 
   // The pair's relative motion at the end of the step, from qacc as it is.
