@@ -337,7 +337,7 @@ void random_patches(int count, double tolerance) {
 }
 
 TEST(GrazingContact, RandomPatchesInFloat) { random_patches<float>(20000, 1e-4); }
-TEST(GrazingContact, RandomPatchesInDouble) { random_patches<double>(200000, 1e-11); }
+TEST(GrazingContact, RandomPatchesInDouble) { random_patches<double>(60000, 1e-11); }
 TEST(GrazingContact, RandomPatchesInLongDouble) { random_patches<long double>(20000, 1e-11); }
 
 }  // namespace

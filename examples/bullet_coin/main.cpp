@@ -98,8 +98,8 @@ double settle_time(const std::vector<double>& t, const std::vector<double>& x, d
   return when;
 }
 
-constexpr double level = 1e-3;      // "stopped": below 1e-3 of the start value, and stays there
-constexpr double eps_level = 1e-2;  // ε compared where the speed is 1e-2 of its start
+constexpr double stop_level = 1e-3;  // "stopped": below 1e-3 of the start value, and stays there
+constexpr double eps_level = 1e-2;   // ε compared where the speed is 1e-2 of its start
 
 // Near the stop: the first sample, both motions still on, whose speed
 // √(v² + (Rω)²) is at most `level` of its start; if the steps jump past that
@@ -168,7 +168,7 @@ run_log run_bullet(model m, double v0, double w0, double duration) {
     if (normal.size() >= window)
       log.peak_average = std::max(log.peak_average, window_sum / static_cast<double>(window));
   }
-  summarize(log, v0, coin_radius * w0, level);
+  summarize(log, v0, coin_radius * w0, stop_level);
   return log;
 }
 
@@ -186,7 +186,7 @@ run_log run_exact(double gamma, double v0, double w0, double duration) {
     log.v.push_back(samples[i].speed * u.velocity_scale());
     log.rw.push_back(coin_radius * samples[i].spin * u.spin_scale());
   }
-  summarize(log, v0, coin_radius * w0, level);
+  summarize(log, v0, coin_radius * w0, stop_level);
   log.peak_normal = log.peak_average = 1;
   return log;
 }

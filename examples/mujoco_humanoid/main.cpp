@@ -52,7 +52,7 @@ struct row {
 
 double sole_shift(const humanoid::scene& s, const std::vector<double>& from) {
   double most = 0;
-  int k = 0;
+  std::size_t k = 0;
   for (const char* foot : {"left_foot", "right_foot"}) {
     const int b = s.body(foot);
     most = std::max(most,

@@ -304,7 +304,8 @@ TEST(MujocoAdapter, PlateOnSeveralFeetHoldsOnASlope) {
     p.run(10);
     EXPECT_LT(std::hypot(p.data->qpos[0] - x, p.data->qpos[1] - y), 1e-9) << feet << " feet";
     EXPECT_LT(std::fabs(p.data->qpos[6] - w), 1e-9) << feet << " feet";
-    for (int k = 0; k < feet; ++k) EXPECT_TRUE(p.friction.report(k).sticking) << k;
+    for (std::size_t k = 0; k < std::size_t(feet); ++k)
+      EXPECT_TRUE(p.friction.report(k).sticking) << k;
   }
 }
 
@@ -324,13 +325,15 @@ TEST(MujocoAdapter, PlateOnSeveralFeetStopsSpinningAndStaysStopped) {
     for (int i = 0; i < 5000 && stopped < 0; ++i) {
       p.friction.step(p.data.get());
       bool all = true;
-      for (int k = 0; k < feet; ++k) all = all && p.friction.report(k).sticking;
+      for (std::size_t k = 0; k < std::size_t(feet); ++k)
+        all = all && p.friction.report(k).sticking;
       if (all) stopped = p.data->time;
     }
     ASSERT_GT(stopped, 0) << feet << " feet never stopped";
     for (int i = 0; i < 500; ++i) {
       p.friction.step(p.data.get());
-      for (int k = 0; k < feet; ++k) ASSERT_TRUE(p.friction.report(k).sticking) << k << ", " << i;
+      for (std::size_t k = 0; k < std::size_t(feet); ++k)
+        ASSERT_TRUE(p.friction.report(k).sticking) << k << ", " << i;
     }
     const std::array<double, 7> at{p.data->qpos[0], p.data->qpos[1], p.data->qpos[2],
                                    p.data->qpos[3], p.data->qpos[4], p.data->qpos[5],
