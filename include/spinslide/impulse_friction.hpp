@@ -118,10 +118,15 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
                 pol);
   const Real load = checked(function, "contact.normal*contact.friction", Real(mu * n),
                             argument_rule::finite, pol);
-  // The largest angular impulse, μΛa⟨r⟩, must be a number too.
+  // The largest angular impulse, μΛa⟨r⟩, must be a number too (its exact
+  // product only where the plain one overflows: an intermediate may).
+  const Real top = profile.mean_radius();
+  const Real plain = load * (a * top);
   const Real spin_load =
-      checked(function, "contact.normal*contact.friction*contact.radius*<r>",
-              detail::product(load, a, Real(profile.mean_radius())), argument_rule::finite, pol);
+      (boost::math::isfinite)(plain)
+          ? plain
+          : checked(function, "contact.normal*contact.friction*contact.radius*<r>",
+                    detail::product(load, a, top), argument_rule::finite, pol);
   if (detail::any_reported(stop[0], stop[1], stop[2], load, spin_load))
     return reported(load + stop[0] + stop[1] + stop[2] + spin_load);
   if (load == 0 || (vx == 0 && vy == 0 && w == 0)) {
@@ -141,9 +146,8 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
   // then by the load: μΛa itself may be subnormal), before any evaluation
   // or metric.
   using std::fabs;
-  if (a > 0 &&
-      detail::in_sticking_triangle(Real(stop[0] / load), Real(stop[1] / load),
-                                   Real(fabs(stop[2]) / a / load), Real(profile.mean_radius())))
+  if (a > 0 && detail::in_sticking_triangle(Real(stop[0] / load), Real(stop[1] / load),
+                                            Real(fabs(stop[2]) / a / load), top))
     return stuck();
   const detail::impulse_frame<Real> frame =
       detail::impulse_frame_for(inverse_mass, a, Real(2 / profile.mean_inverse_radius()));
