@@ -84,16 +84,16 @@ struct law_inputs {
 };
 
 // The nearest point of L₃ to `target` (in the frame's units) in the frame's
-// metric, in the limit set's units, from `start` (in the profile's), or
-// for a thin set without one from thin_start.
+// metric, for a frame whose curve is scaled (k ≠ 1; impulse_friction
+// projects on the profile's own curve itself), in the limit set's units,
+// from `start` (in the profile's), or for a thin set without one from
+// thin_start.
 template <class Profile, class Real = typename Profile::value_type>
 wrench_projection<Real> project_in_frame(const Profile& profile, const impulse_frame<Real>& frame,
                                          const vector3<Real>& target,
                                          const curve_point<Real>& start,
                                          const law_inputs<Real>& law) {
   const Real s0 = start.ratio;
-  if (frame.k == 1)
-    return metric_projector<Profile>(profile, target, frame.metric, frame.inverse)(s0, &start);
   // The start and the answer between the units: ε' = kε, 𝓣' = k𝓣, 𝓕′' = 𝓕′/k.
   const Real k = frame.k;
   const bool given = s0 > 0 && s0 < std::numeric_limits<Real>::infinity();

@@ -434,7 +434,7 @@ class coupled_friction {
     mj_fwdConstraint(model_, data);
     add_to(data->qfrc_applied, -1.0);
     bool done = true;
-    std::vector<vec3> ends;
+    ends_.clear();
     for (const std::size_t i : active_) {
       coupled_pair& pair = pairs_[i];
       const vec3 s = end_of_step_motion(pair, data);
@@ -443,10 +443,10 @@ class coupled_friction {
       const double slip = std::hypot(s[0], s[1], a * s[2]);
       const double scale = std::hypot(f[0], f[1], a * f[2]);
       if (pair.report.sticking && slip > 1e-9 * scale) done = false;
-      ends.push_back(s);
+      ends_.push_back(s);
     }
     for (std::size_t i = 0; i < active_.size(); ++i) {
-      vec3 motion = ends[i];
+      vec3 motion = ends_[i];
       for (std::size_t j = 0; j < active_.size(); ++j) {
         const auto moved = detail::multiply(coupling_.at(i, j), pairs_[active_[j]].impulse);
         for (std::size_t k = 0; k < 3; ++k) motion[k] -= moved[k];
@@ -479,6 +479,7 @@ class coupled_friction {
   std::vector<double> delta_, acceleration_, jar_;
   std::vector<int> states_;
   std::vector<std::size_t> active_;  // the pairs in contact this step
+  std::vector<vec3> ends_;           // their motion at the step's end (settled())
   engines::pair_coupling coupling_{0};
   std::vector<engines::joint_pair> joint_;
   engines::joint_solver solver_;
