@@ -455,7 +455,7 @@ void impulse_sliding_warm(benchmark::State& s) {
 }
 // The sliding cases from the curve point of the last step's answer (the
 // slip with its spin 1e-3 higher: ratio, 𝓕 and 𝓣 there), as
-// engines::pair_friction keeps it.
+// spinslide::pair_friction keeps it.
 template <class P>
 void impulse_sliding_from_point(benchmark::State& s) {
   const auto& cases = impulse_cases<P>();

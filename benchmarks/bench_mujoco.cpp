@@ -40,10 +40,10 @@ void step_the_disk(benchmark::State& state, friction kind, bool moving) {
   std::unique_ptr<spinslide::mujoco::coupled_friction> coupled;
   if (kind == friction::spinslide) {
     coupled = std::make_unique<spinslide::mujoco::coupled_friction>(m);
-    coupled->couple(spinslide::mujoco::geom_name{"disk"}, spinslide::mujoco::geom_name{"floor"},
-                    spinslide::engines::pair_friction(
-                        spinslide::uniform_disk<>(), spinslide::patch_radius<double>{0.06},
-                        spinslide::friction_coefficient<double>{0.2}));
+    coupled->couple(
+        spinslide::mujoco::geom_name{"disk"}, spinslide::mujoco::geom_name{"floor"},
+        spinslide::pair_friction(spinslide::uniform_disk<>(), spinslide::patch_radius<double>{0.06},
+                                 spinslide::friction_coefficient<double>{0.2}));
   }
   auto step = [&] {
     if (coupled)

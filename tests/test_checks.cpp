@@ -253,3 +253,27 @@ TEST(Checks, FunctionsReturnNanWithErrnoOnError) { functions_return_nan<errno_po
 TEST(Checks, FunctionsReturnNanWithIgnoreError) { functions_return_nan<ignore_policy>(); }
 
 }  // namespace
+
+// issue 27 - the engine adapters' errors, one convention (checks.hpp): a
+// missing object and a wrong one are std::invalid_argument naming the
+// entry point, an index beyond those coupled is std::out_of_range naming
+// the index and the count.
+TEST(Checks, AdapterErrorsFollowOneConvention) {
+  const char* function = "spinslide::some_adapter::couple";
+  int object = 0;
+  EXPECT_EQ(detail::required(function, "the body", &object), &object);
+  try {
+    detail::required(function, "the body", static_cast<int*>(nullptr));
+    ADD_FAILURE();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "spinslide::some_adapter::couple: the body is null");
+  }
+  EXPECT_THROW(detail::refuse(function, "a == b"), std::invalid_argument);
+  EXPECT_EQ(detail::checked_index(function, "pair", 1, 2), 1u);
+  try {
+    detail::checked_index(function, "pair", 5, 2);
+    ADD_FAILURE();
+  } catch (const std::out_of_range& e) {
+    EXPECT_EQ(std::string(e.what()), "spinslide::some_adapter::couple: pair 5, but 2 are coupled");
+  }
+}

@@ -14,6 +14,7 @@
 #include <spinslide/spinslide.hpp>
 
 #include <array>
+#include <type_traits>
 
 #if defined(__GNUC__)
 #pragma GCC diagnostic ignored "-Wdeprecated-declarations"
@@ -77,3 +78,9 @@ TEST(DeprecatedNames, SpringFrictionIsTheSpringLawsResult) {
 }
 
 }  // namespace
+
+// issue 27 moved pair_friction and its settings from spinslide::engines into
+// the core: the old names are the same types.
+static_assert(std::is_same<engines::pair_friction, pair_friction>::value, "");
+static_assert(std::is_same<engines::hertz_radius, hertz_radius>::value, "");
+static_assert(std::is_same<engines::patch_profile, patch_profile>::value, "");

@@ -30,7 +30,7 @@ namespace {
 using namespace spinslide;
 using engines::joint_pair;
 using engines::pair_coupling;
-using engines::pair_friction;
+using spinslide::pair_friction;
 using matrix = detail::matrix3<double>;
 using vec3 = std::array<double, 3>;
 

@@ -2,14 +2,14 @@
 //  Distributed under the Boost Software License, Version 1.0.
 //  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
 //
-// engines::pair_friction, the engine-independent half of every adapter
+// spinslide::pair_friction, the engine-independent half of every adapter
 // (issue 27: built and tested without any engine): its settings' checks,
 // its radius rule (fixed, or Hertz's √(R*δ) from 0 or a floor), exact stick
 // and slide against closed forms.
 
 #include <gtest/gtest.h>
 
-#include <spinslide/engines/pair_friction.hpp>
+#include <spinslide/pair_friction.hpp>
 
 #include <cmath>
 #include <limits>
@@ -19,9 +19,9 @@
 namespace {
 
 using spinslide::friction_coefficient;
+using spinslide::hertz_radius;
+using spinslide::pair_friction;
 using spinslide::patch_radius;
-using spinslide::engines::hertz_radius;
-using spinslide::engines::pair_friction;
 
 constexpr double pi = 3.14159265358979323846;
 

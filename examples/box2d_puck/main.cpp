@@ -73,9 +73,9 @@ int main(int argc, char** argv) {
 
   // snippet begin
   spinslide::box2d::table_friction table(spinslide::box2d::gravity{g});
-  table.add(a, spinslide::engines::pair_friction(spinslide::uniform_disk<>(),
-                                                 spinslide::patch_radius<double>{R},
-                                                 spinslide::friction_coefficient<double>{mu}));
+  table.add(
+      a, spinslide::pair_friction(spinslide::uniform_disk<>(), spinslide::patch_radius<double>{R},
+                                  spinslide::friction_coefficient<double>{mu}));
   // snippet end
 
   const std::string csv = out + "/box2d_puck.csv";

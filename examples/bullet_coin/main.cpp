@@ -265,12 +265,12 @@ ball_log run_ball(model m) {
     ball->setSpinningFriction(ball_mu * 3 * pi / 16 * ball_patch);
     ball->setRollingFriction(1e-9);
   } else {
-    s.plugin().couple(ball, s.table(),
-                      spinslide::engines::pair_friction(
-                          spinslide::hertz<>(),
-                          spinslide::engines::hertz_radius(
-                              ball_radius, spinslide::patch_radius<double>{ball_patch}),
-                          spinslide::friction_coefficient<double>{ball_mu}));
+    s.plugin().couple(
+        ball, s.table(),
+        spinslide::pair_friction(
+            spinslide::hertz<>(),
+            spinslide::hertz_radius(ball_radius, spinslide::patch_radius<double>{ball_patch}),
+            spinslide::friction_coefficient<double>{ball_mu}));
   }
   for (int i = 0; i < 300; ++i) s.step(ball_dt);
   ball->setLinearVelocity(btVector3(1.0, 0, ball->getLinearVelocity().z()));

@@ -148,10 +148,10 @@ class scene {
 };
 
 // spinslide's friction of the coin on the table: uniform pressure, a = R.
-inline spinslide::engines::pair_friction coin_friction() {
-  return spinslide::engines::pair_friction(spinslide::uniform_disk<>(),
-                                           spinslide::patch_radius<double>{coin_radius},
-                                           spinslide::friction_coefficient<double>{coin_mu});
+inline spinslide::pair_friction coin_friction() {
+  return spinslide::pair_friction(spinslide::uniform_disk<>(),
+                                  spinslide::patch_radius<double>{coin_radius},
+                                  spinslide::friction_coefficient<double>{coin_mu});
 }
 
 // The coin's friction with the table of `s`: in a native scene Bullet's own,

@@ -117,9 +117,9 @@ record run(const friction_model& fm, double v0, double omega0, double duration,
     coupled = std::make_unique<spinslide::mujoco::coupled_friction>(m);
     coupled->couple(
         spinslide::mujoco::geom_name{"disk"}, spinslide::mujoco::geom_name{"floor"},
-        spinslide::engines::pair_friction(
-            spinslide::uniform_disk<>(), spinslide::patch_radius<double>{mujoco_scene::radius},
-            spinslide::friction_coefficient<double>{mujoco_scene::friction}));
+        spinslide::pair_friction(spinslide::uniform_disk<>(),
+                                 spinslide::patch_radius<double>{mujoco_scene::radius},
+                                 spinslide::friction_coefficient<double>{mujoco_scene::friction}));
   }
   auto step = [&] {
     if (coupled)
@@ -301,10 +301,10 @@ ball_log run_ball(double torsional) {
   std::unique_ptr<spinslide::mujoco::coupled_friction> coupled;
   if (torsional <= 0) {
     coupled = std::make_unique<spinslide::mujoco::coupled_friction>(m);
-    coupled->couple(spinslide::mujoco::geom_name{"ball"}, spinslide::mujoco::geom_name{"floor"},
-                    spinslide::engines::pair_friction(
-                        spinslide::hertz<>(), spinslide::engines::hertz_radius{ball_radius},
-                        spinslide::friction_coefficient<double>{ball_mu}));
+    coupled->couple(
+        spinslide::mujoco::geom_name{"ball"}, spinslide::mujoco::geom_name{"floor"},
+        spinslide::pair_friction(spinslide::hertz<>(), spinslide::hertz_radius{ball_radius},
+                                 spinslide::friction_coefficient<double>{ball_mu}));
   }
   auto step = [&] {
     if (coupled)

@@ -129,14 +129,14 @@ inline std::vector<int> body_geoms(const mjModel* m) {
 // soles (a uniform disk of the patch radius), the capsules and spheres
 // curved (Hertz's patch from MuJoCo's penetration, from 0: a grazing touch is
 // point friction).
-inline spinslide::engines::pair_friction friction_of(const mjModel* m, int geom) {
+inline spinslide::pair_friction friction_of(const mjModel* m, int geom) {
   const spinslide::friction_coefficient<double> mu{friction};
   if (m->geom_type[geom] == mjGEOM_BOX)
-    return spinslide::engines::pair_friction(spinslide::uniform_disk<>(),
-                                             spinslide::patch_radius<double>{foot_patch}, mu);
-  return spinslide::engines::pair_friction(
+    return spinslide::pair_friction(spinslide::uniform_disk<>(),
+                                    spinslide::patch_radius<double>{foot_patch}, mu);
+  return spinslide::pair_friction(
       spinslide::hertz<>(),
-      spinslide::engines::hertz_radius{m->geom_size[3 * static_cast<std::size_t>(geom)]}, mu);
+      spinslide::hertz_radius{m->geom_size[3 * static_cast<std::size_t>(geom)]}, mu);
 }
 
 // A humanoid scene: the model, its data and, for the coupled model, the

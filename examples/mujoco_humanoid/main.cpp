@@ -79,7 +79,7 @@ double sole_torque(const humanoid::scene& s) {
   if (s.coupled_friction) {
     const auto ids = humanoid::body_geoms(s.model.get());
     const auto at = std::find(ids.begin(), ids.end(), foot) - ids.begin();
-    return std::fabs(s.coupled_friction->report(static_cast<std::size_t>(at)).torque);
+    return std::fabs(s.coupled_friction->report(static_cast<std::size_t>(at)).friction_torque());
   }
   double t = 0;
   for (int i = 0; i < s.data->ncon; ++i) {

@@ -19,6 +19,8 @@
 #include <spinslide/equations_of_motion.hpp>
 #include <spinslide/impulse_friction.hpp>
 #include <spinslide/limit_set.hpp>
+#include <spinslide/pair_friction.hpp>
+#include <spinslide/pair_report.hpp>
 #include <spinslide/planar_metric.hpp>
 #include <spinslide/profile.hpp>
 #include <spinslide/profile_base.hpp>

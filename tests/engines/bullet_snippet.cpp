@@ -37,10 +37,10 @@ int main() try {
   world.setGravity(btVector3(0, 0, -9.81));
   world.addRigidBody(&table);
   world.addRigidBody(&coin);
-  solver.couple(&coin, &table,
-                spinslide::engines::pair_friction(spinslide::uniform_disk<>(),
-                                                  spinslide::patch_radius<double>{0.012},
-                                                  spinslide::friction_coefficient<double>{0.3}));
+  solver.couple(
+      &coin, &table,
+      spinslide::pair_friction(spinslide::uniform_disk<>(), spinslide::patch_radius<double>{0.012},
+                               spinslide::friction_coefficient<double>{0.3}));
   coin.setLinearVelocity(btVector3(0.1, 0, 0));
   coin.setAngularVelocity(btVector3(0, 0, 8));
   for (int i = 0; i < 10000; ++i) world.stepSimulation(1e-5, 1, 1e-5);  // 0.1 s

@@ -25,10 +25,10 @@ int main() try {
 
   // snippet begin
   spinslide::mujoco::coupled_friction friction(model);
-  friction.couple(spinslide::mujoco::geom_name{"disk"}, spinslide::mujoco::geom_name{"floor"},
-                  spinslide::engines::pair_friction(spinslide::uniform_disk<>(),
-                                                    spinslide::patch_radius<double>{0.06},
-                                                    spinslide::friction_coefficient<double>{0.2}));
+  friction.couple(
+      spinslide::mujoco::geom_name{"disk"}, spinslide::mujoco::geom_name{"floor"},
+      spinslide::pair_friction(spinslide::uniform_disk<>(), spinslide::patch_radius<double>{0.06},
+                               spinslide::friction_coefficient<double>{0.2}));
   while (data->time < 0.5) friction.step(data);  // instead of mj_step(model, data)
   // snippet end
 

@@ -12,6 +12,8 @@
 #include <spinslide/spinslide.hpp>
 
 #include "../../examples/bullet_coin/scene.hpp"
+#include "random_throws.hpp"
+#include "report_convention.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,10 +31,10 @@ using bullet_scene::coin_half_thickness;
 using bullet_scene::coin_radius;
 using bullet_scene::g;
 using spinslide::friction_coefficient;
+using spinslide::hertz_radius;
+using spinslide::pair_friction;
 using spinslide::patch_radius;
 using spinslide::bullet::coupled_friction_solver;
-using spinslide::engines::hertz_radius;
-using spinslide::engines::pair_friction;
 
 constexpr double pi = 3.14159265358979323846;
 
@@ -100,10 +102,10 @@ TEST(BulletAdapter, CouplesAndDecouplesPairsInEitherOrder) {
   s.couple(w.table(), coin, coin_friction());  // the same pair: replaces it
   EXPECT_TRUE(s.coupled(coin, w.table()));
   EXPECT_TRUE(s.coupled(w.table(), coin));
-  EXPECT_FALSE(s.report(coin, w.table()).touching);  // no step yet
+  EXPECT_FALSE(s.report(coin, w.table()).touching());  // no step yet
   w.coin_steps(10);
-  const auto& r = s.report(w.table(), coin);
-  EXPECT_TRUE(r.touching);
+  const auto r = s.report(w.table(), coin);
+  EXPECT_TRUE(r.touching());
   EXPECT_EQ(r.patch_radius, coin_radius);
   EXPECT_GT(r.normal_impulse, 0.0);
   EXPECT_TRUE(s.decouple(coin, w.table()));
@@ -157,7 +159,7 @@ struct resting_ball {
     w.plugin().couple(ball, w.table(), ball_friction());
     for (int i = 0; i < 3000; ++i) w.step(ball_dt);
   }
-  const spinslide::bullet::pair_report& report() { return w.plugin().report(ball, w.table()); }
+  spinslide::bullet::pair_report report() { return w.plugin().report(ball, w.table()); }
 };
 
 // `steps` steps of the ball: the sum of the normal impulses, the end of
@@ -170,13 +172,13 @@ struct ball_run {
 
 ball_run step_ball(resting_ball& b, int steps) {
   ball_run out;
-  const auto& r = b.report();
   for (int i = 0; i < steps; ++i) {
     b.w.step(ball_dt);
+    const auto r = b.report();
     out.impulse += r.normal_impulse;
     if (out.sticking_from < 0 && r.sticking) out.sticking_from = (i + 1) * ball_dt;
     if (out.sticking_from < 0)
-      out.not_slipping_before += r.touching && r.ratio > 0 ? 0 : 1;
+      out.not_slipping_before += r.touching() && r.ratio > 0 ? 0 : 1;
     else
       out.slipping_after += r.sticking ? 0 : 1;
   }
@@ -397,4 +399,173 @@ TEST(BulletAdapter, RegressionCoinStopsMatchTheExactOnes) {
   EXPECT_LE(coarse.moved_again, 10);  // measured 5: Bullet's normal contact (see above)
   EXPECT_GT(coarse.relative.front(), -0.01);
   EXPECT_LT(std::fabs(median(coarse.relative)), 5e-3);
+}
+
+// issue 27 - one pair_report for every adapter: report(coin, table) has the
+// coin as its first body (the normal points down into the table) and
+// report(table, coin) is the same step reversed; the report keeps the
+// common convention at every step of a sliding and spinning throw
+// (report_convention.hpp, against the coin's motion read from Bullet).
+TEST(BulletAdapter, ReportKeepsTheCommonConvention) {
+  world w;
+  btRigidBody* coin = w.add_coin(btVector3(0, 0, coin_half_thickness));
+  w.plugin().couple(w.table(), coin, coin_friction());
+  constexpr double dt = 1e-4;
+  for (int i = 0; i < 100; ++i) w.step(dt);  // settle
+  coin->setLinearVelocity(btVector3(0.3f, 0.1f, 0));
+  coin->setAngularVelocity(btVector3(0, 0, 20));
+  int slipping = 0;
+  for (int i = 0; i < 2000; ++i) {
+    w.step(dt);
+    const spinslide::pair_report r = w.plugin().report(coin, w.table());
+    EXPECT_TRUE(report_convention::reversed_equal(r, w.plugin().report(w.table(), coin))) << i;
+    const btVector3 centre(static_cast<btScalar>(r.centre[0]), static_cast<btScalar>(r.centre[1]),
+                           static_cast<btScalar>(r.centre[2]));
+    const btVector3 v = coin->getVelocityInLocalPoint(centre - coin->getCenterOfMassPosition());
+    const btVector3 spin = coin->getAngularVelocity();
+    report_convention::expect_kept(
+        r, {static_cast<double>(v.x()), static_cast<double>(v.y()), static_cast<double>(v.z())},
+        {static_cast<double>(spin.x()), static_cast<double>(spin.y()),
+         static_cast<double>(spin.z())});
+    if (!r.touching()) continue;
+    EXPECT_NEAR(r.normal[2], -1.0, 1e-6);
+    EXPECT_EQ(r.step, dt);
+    slipping += r.sticking ? 0 : 1;
+  }
+  EXPECT_GT(slipping, 100);
+  EXPECT_TRUE(w.plugin().report(coin, w.table()).sticking);
+}
+
+// issue 27 - randomized throws (random_throws.hpp): the steel coin of
+// examples/bullet_coin at the steps users run, from 1/240 s to 1e-5 s, each
+// throw from the coin settled on the table (one world per step, the coin
+// put back where it settled before each throw).  No exception, no NaN;
+// every throw stops, none slips again, and each stop is within 2 steps
+// before to 2.5 steps after its exact stop (the measured extremes, per
+// step, are in docs/engines.md, "Randomized throws").
+TEST(BulletAdapter, RandomThrowsStopNearTheExactStop) {
+  const std::vector<double> steps{1.0 / 240, 1e-3, 1e-4, 1e-5};
+  const double thickness = 2 * coin_half_thickness;
+  const double mass = 7850 * pi * coin_radius * coin_radius * thickness;
+  btCylinderShapeZ shape(btVector3(coin_radius, coin_radius, thickness / 2));
+  std::vector<std::unique_ptr<bullet_scene::scene>> scenes;
+  std::vector<btRigidBody*> coins;
+  std::vector<btTransform> settled;
+  for (const double dt : steps) {
+    scenes.push_back(
+        std::make_unique<bullet_scene::scene>(bullet_scene::friction::plugin, btVector3(0, 0, 0)));
+    coins.push_back(scenes.back()->add(&shape, mass, btVector3(0, 0, thickness / 2)));
+    bullet_scene::set_coin_friction(*scenes.back(), coins.back());
+    for (int i = 0; i < 300; ++i) scenes.back()->step(dt);
+    settled.push_back(coins.back()->getCenterOfMassTransform());
+  }
+  const auto cs = random_throws::cases({coin_radius, 0.5, coin_mu, g, steps}, 2703);
+  std::vector<random_throws::outcome> os(cs.size());
+  for (std::size_t k = 0; k < cs.size(); ++k) {
+    const random_throws::throw_case& c = cs[k];
+    const std::size_t at = k % steps.size();
+    bullet_scene::scene& s = *scenes[at];
+    btRigidBody* coin = coins[at];
+    coin->setCenterOfMassTransform(settled[at]);
+    coin->setLinearVelocity(btVector3(static_cast<btScalar>(c.speed * std::cos(c.direction)),
+                                      static_cast<btScalar>(c.speed * std::sin(c.direction)), 0));
+    coin->setAngularVelocity(btVector3(0, 0, static_cast<btScalar>(c.spin)));
+    os[k] = random_throws::run(c, [&] {
+      s.step(c.dt);
+      const btVector3 v = coin->getLinearVelocity(), w = coin->getAngularVelocity();
+      return random_throws::observation{
+          std::isfinite(static_cast<double>(v.x() + v.y() + v.z() + w.x() + w.y() + w.z())),
+          s.plugin().report(coin, s.table())};
+    });
+  }
+  for (const auto& entry : random_throws::summarize("Bullet", cs, os)) {
+    const random_throws::step_statistics& s = entry.second;
+    EXPECT_EQ(s.not_finite, 0) << entry.first;
+    EXPECT_EQ(s.never, 0) << entry.first;
+    EXPECT_EQ(s.slipped_again, 0) << entry.first;
+    EXPECT_GE(s.quantile(0), -2.0) << entry.first;  // measured -1.27 at 1/240 s, -0.03 at 1e-5 s
+    EXPECT_LE(s.quantile(1), 2.5) << entry.first;   // measured +1.74 at 1e-3 s, +1.00 at 1e-5 s
+  }
+}
+
+namespace {
+
+// A body on two round feet (a compound of two cylinders, R = 2 cm, centres
+// at ±(7, 3) cm from its centre of mass, 1 kg), coupled to the table as one
+// pair: Bullet gives each foot its own manifold.
+struct two_feet {
+  static constexpr double a = 0.02, x = 0.07, y = 0.03, mass = 1, mu = 0.3;
+  bullet_scene::scene s;
+  btCylinderShapeZ foot{btVector3(a, a, 0.01)};
+  btCompoundShape shape;
+  btRigidBody* body;
+  explicit two_feet(const btVector3& gravity = btVector3(0, 0, -g))
+      : s(bullet_scene::friction::plugin, btVector3(0, 0, 0), gravity) {
+    btTransform t;
+    t.setIdentity();
+    t.setOrigin(btVector3(x, y, 0));
+    shape.addChildShape(t, &foot);
+    t.setOrigin(btVector3(-x, -y, 0));
+    shape.addChildShape(t, &foot);
+    body = s.add(&shape, mass, btVector3(0, 0, 0.01));
+    s.plugin().couple(body, s.table(),
+                      pair_friction(spinslide::uniform_disk<>(), patch_radius<double>{a},
+                                    friction_coefficient<double>{mu}));
+  }
+};
+
+}  // namespace
+
+// issue 27 - a compound's feet: each foot's patch is centred under that foot
+// (the child shape's centre; it was the body's centre of mass for every
+// manifold, so each foot saw pure spin), and the feet are solved together
+// (joint_pairs.hpp; they were solved one after the other).  Spun in place,
+// each foot slides at ε = d/a along its circle, and the spin falls at the
+// constant rate μmg(d𝓕(ε) + a𝓣(ε))/I until it stops: the stop within 1 % at
+// Δt = 1e-5 s (measured +0.54 %: Bullet's two normal loads differ a little,
+// and the body drifts) and 3 % at 1e-4 s (measured +2.1 %; one foot after
+// the other gave +6.2 %; a centre shared by both feet had not stopped at
+// 1.2 exact stops).  The pair's report sums
+// both feet.
+TEST(BulletAdapter, CompoundFeetSpunInPlaceStopAtTheExactTime) {
+  for (const double dt : {1e-4, 1e-5}) {
+    two_feet f;
+    for (int i = 0; i < static_cast<int>(0.05 / dt); ++i) f.s.step(dt);
+    const double w0 = 5, d = std::hypot(two_feet::x, two_feet::y), eps = d / two_feet::a;
+    f.body->setAngularVelocity(btVector3(0, 0, w0));
+    const double inertia = moment_of_inertia(f.body, 2);
+    const spinslide::uniform_disk<> disk;
+    const double exact = inertia * w0 /
+                         (two_feet::mu * two_feet::mass * g *
+                          (d * disk.force(eps) + two_feet::a * disk.torque(eps)));
+    double stopped = -1;
+    for (int i = 1; i <= static_cast<int>(1.2 * exact / dt) && stopped < 0; ++i) {
+      f.s.step(dt);
+      const spinslide::pair_report r = f.s.plugin().report(f.body, f.s.table());
+      if (i == 10) {
+        EXPECT_GE(r.contacts, 2) << "both feet, in one report";
+        EXPECT_NEAR(r.normal_force(), two_feet::mass * g, 0.05 * g);
+        EXPECT_NEAR(r.ratio, eps, 0.05 * eps);
+      }
+      if (r.sticking) stopped = i * dt;
+    }
+    ASSERT_GT(stopped, 0) << dt;
+    EXPECT_NEAR(stopped / exact, 1, dt < 5e-5 ? 0.01 : 0.03) << dt;
+  }
+}
+
+// The feet hold on a slope at 0.9 of the friction angle: below 1e-9 m and
+// 1e-9 rad in 1 s at Δt = 1e-4 s (measured 6e-19 m; at 1e-3 s Bullet's
+// normal contact itself rocks the feet by micrometres).  How the load is
+// shared between the feet is not determined; the solve may leave one foot
+// at its limit without slip, which its report then counts as slipping.
+TEST(BulletAdapter, CompoundFeetHoldOnASlope) {
+  const double alpha = std::atan(0.9 * two_feet::mu);
+  two_feet f(btVector3(g * std::sin(alpha), 0, -g * std::cos(alpha)));
+  for (int i = 0; i < 2000; ++i) f.s.step(1e-4);
+  const btVector3 at = f.body->getCenterOfMassPosition();
+  const btQuaternion turned = f.body->getOrientation();
+  for (int i = 0; i < 10000; ++i) f.s.step(1e-4);
+  EXPECT_LT((f.body->getCenterOfMassPosition() - at).length(), 1e-9);
+  EXPECT_LT(static_cast<double>(f.body->getOrientation().angleShortestPath(turned)), 1e-9);
 }

@@ -54,7 +54,7 @@ TEST(MujocoHumanoid, StandsStillOnASlope) {
   for (std::size_t k = 0; k < before.size(); ++k) EXPECT_NEAR(after[k], before[k], 1e-9) << k;
   for (const int p : foot_pairs(s)) {
     EXPECT_TRUE(s.coupled_friction->report(static_cast<std::size_t>(p)).sticking) << p;
-    EXPECT_GT(s.coupled_friction->report(static_cast<std::size_t>(p)).normal_force, 100);
+    EXPECT_GT(s.coupled_friction->report(static_cast<std::size_t>(p)).normal_force(), 100);
   }
 }
 
@@ -128,9 +128,9 @@ TEST(MujocoHumanoid, SolesResistPivotingWithTheirSpinFriction) {
     s.step();
     for (const int p : foot_pairs(s)) {
       const auto& r = s.coupled_friction->report(static_cast<std::size_t>(p));
-      const double bound = humanoid::friction * r.normal_force * humanoid::foot_patch * 2.0 / 3.0;
-      EXPECT_LE(std::fabs(r.torque), bound * (1 + 1e-9) + 1e-9);
-      most = std::max(most, std::fabs(r.torque));
+      const double bound = humanoid::friction * r.normal_force() * humanoid::foot_patch * 2.0 / 3.0;
+      EXPECT_LE(std::fabs(r.friction_torque()), bound * (1 + 1e-9) + 1e-9);
+      most = std::max(most, std::fabs(r.friction_torque()));
     }
   }
   const double turned = yaw();

@@ -28,6 +28,8 @@
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/precision.hpp>
 
+#include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 
@@ -207,6 +209,35 @@ throw_input<Real> check_throw(const char* function, Real inertia_ratio, Real v0,
       checked(function, "inertia_ratio", inertia_ratio, argument_rule::throw_inertia_ratio, pol),
       checked(function, "v0", v0, argument_rule::finite_non_negative, pol),
       checked(function, "omega0", omega0, argument_rule::finite_non_negative, pol)};
+}
+
+/// The engine adapters' errors, one convention for all of them
+/// (docs/engines.md, "Errors"): a number outside its domain is
+/// std::domain_error naming the value (checked_constructor_argument, also
+/// for a function's argument, such as a time step: an adapter has no NaN to
+/// give back); a missing or wrong object (a null pointer, a pair of a body
+/// with itself, an unknown name, an engine setting the adapter cannot work
+/// with) is std::invalid_argument (`refuse`); an index or a pair that was
+/// not coupled is std::out_of_range (`checked_index`).
+[[noreturn]] inline void refuse(const char* function, const std::string& why) {
+  throw std::invalid_argument(std::string(function) + ": " + why);
+}
+
+/// `pointer`, or std::invalid_argument "function: `what` is null".
+template <class T>
+T* required(const char* function, const char* what, T* pointer) {
+  if (pointer == nullptr) refuse(function, std::string(what) + " is null");
+  return pointer;
+}
+
+/// `index` if below `count`; otherwise std::out_of_range naming both
+/// ("pair 5, but 2 pairs are coupled").
+inline std::size_t checked_index(const char* function, const char* what, std::size_t index,
+                                 std::size_t count) {
+  if (index >= count)
+    throw std::out_of_range(std::string(function) + ": " + what + " " + std::to_string(index) +
+                            ", but " + std::to_string(count) + " are coupled");
+  return index;
 }
 
 }  // namespace detail

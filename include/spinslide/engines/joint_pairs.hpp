@@ -29,8 +29,9 @@
 #ifndef SPINSLIDE_ENGINES_JOINT_PAIRS_HPP
 #define SPINSLIDE_ENGINES_JOINT_PAIRS_HPP
 
+#include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/matrix3.hpp>
-#include <spinslide/engines/pair_friction.hpp>
+#include <spinslide/pair_friction.hpp>
 #include <spinslide/planar_metric.hpp>
 
 #include <array>
@@ -81,7 +82,7 @@ class pair_coupling {
 /// and, after solve_jointly, the pair's impulse.
 struct joint_pair {
   /// The pair's settings and its kept curve point (updated by the solve).
-  std::reference_wrapper<pair_friction> friction;
+  std::reference_wrapper<spinslide::pair_friction> friction;
   /// The pair's slip (v_x, v_y, ω) at the end of the step without any of the
   /// pairs' friction.
   std::array<double, 3> free_motion{};
@@ -152,9 +153,9 @@ class joint_solver {
                       const joint_settings& settings = {}) {
     const std::size_t n = pairs.size();
     if (w.size() != n)
-      throw std::invalid_argument("spinslide::engines::joint_solver::solve: a coupling of " +
-                                  std::to_string(w.size()) + " pairs for " + std::to_string(n) +
-                                  " pairs");
+      detail::refuse("spinslide::engines::joint_solver::solve",
+                     "a coupling of " + std::to_string(w.size()) + " pairs for " +
+                         std::to_string(n) + " pairs");
     own_.clear();
     slip_.clear();
     double scale = 0;  // Σ sᵢᵀWᵢᵢ⁻¹sᵢ: twice the free motions' energy, pair by pair
@@ -166,6 +167,10 @@ class joint_solver {
       slip_.push_back(pairs[i].free_motion);  // s_i + Σ_j W_ij P_j: the slip after the step
     }
     joint_outcome out;
+    if (n == 1) {  // one block: its projection is the exact answer, no sweep to check it
+      update(pairs, w, 0);
+      return {1, true};
+    }
     for (out.sweeps = 1; out.sweeps <= settings.max_sweeps; ++out.sweeps) {
       before_ = slip_;
       for (std::size_t i = 0; i < n; ++i) update(pairs, w, i);

@@ -7,9 +7,9 @@
 ///
 ///     spinslide::mujoco::coupled_friction friction(model);
 ///     friction.couple(spinslide::mujoco::geom_name{"disk"}, spinslide::mujoco::geom_name{"floor"},
-///                     spinslide::engines::pair_friction(spinslide::uniform_disk<>(),
-///                                                       spinslide::patch_radius<double>{0.06},
-///                                                       spinslide::friction_coefficient<double>{0.2}));
+///                     spinslide::pair_friction(spinslide::uniform_disk<>(),
+///                                              spinslide::patch_radius<double>{0.06},
+///                                              spinslide::friction_coefficient<double>{0.2}));
 ///     for (...) friction.step(data);  // instead of mj_step(model, data)
 ///
 /// The coupled geoms' contacts must be frictionless (condim="1"): MuJoCo
@@ -37,8 +37,10 @@
 #define SPINSLIDE_ENGINES_MUJOCO_HPP
 
 #include <mujoco/mujoco.h>
+#include <spinslide/detail/checks.hpp>
 #include <spinslide/engines/joint_pairs.hpp>
-#include <spinslide/engines/pair_friction.hpp>
+#include <spinslide/pair_friction.hpp>
+#include <spinslide/pair_report.hpp>
 
 #include <array>
 #include <cmath>
@@ -64,19 +66,9 @@ struct geom_name {
   std::string value;  ///< the name
 };
 
-/// What happened at one coupled pair in the last step.
-struct pair_report {
-  int contacts = 0;                ///< MuJoCo's contacts between the two geoms
-  double normal_force = 0;         ///< their summed normal force N [N]
-  double penetration = 0;          ///< the deepest penetration δ [m]
-  double patch_radius = 0;         ///< the patch radius used [m]
-  std::array<double, 3> centre{};  ///< the patch centre: the N-weighted mean of the contacts
-  std::array<double, 3> normal{};  ///< the contact normal, from the first geom to the second
-  bool sticking = false;           ///< the friction impulse stopped the pair's relative motion
-  double ratio = 0;                ///< ε after the step (NaN when sticking or without contact)
-  std::array<double, 2> force{};   ///< the friction force on geom a, in the tangent axes [N]
-  double torque = 0;               ///< the friction torque on geom a about the normal [N m]
-};
+/// What happened at one coupled pair in the last step, geom a as its first
+/// body: the report every adapter gives (pair_report.hpp).
+using pair_report = spinslide::pair_report;
 
 /// spinslide's coupled friction for chosen geom pairs of one MuJoCo model
 /// (see the file's comment).
@@ -96,19 +88,19 @@ class coupled_friction {
   /// report().  Both geoms must be frictionless (condim 1) and distinct;
   /// otherwise std::invalid_argument.  A pair already coupled (in either
   /// order) keeps its index and takes the new friction.
-  std::size_t couple(geom_id a, geom_id b, const engines::pair_friction& friction) {
+  std::size_t couple(geom_id a, geom_id b, const spinslide::pair_friction& friction) {
+    static const char* function = "spinslide::mujoco::coupled_friction::couple";
     const int ngeom = model_->ngeom;
     if (a.value < 0 || a.value >= ngeom || b.value < 0 || b.value >= ngeom || a.value == b.value)
-      throw std::invalid_argument(
-          "spinslide::mujoco::coupled_friction::couple: two distinct geom ids in [0, ngeom) are "
-          "needed");
+      detail::refuse(function, "geom ids " + std::to_string(a.value) + " and " +
+                                   std::to_string(b.value) + "; two distinct ids in [0, " +
+                                   std::to_string(ngeom) + ") are needed");
     for (const int g : {a.value, b.value}) {
       if (model_->geom_condim[g] != 1)
-        throw std::invalid_argument(
-            "spinslide::mujoco::coupled_friction::couple: geom " + std::to_string(g) +
-            " has condim " + std::to_string(model_->geom_condim[g]) +
-            "; coupled geoms must be frictionless (condim=\"1\"), so that MuJoCo adds no "
-            "friction of its own");
+        detail::refuse(function, "geom " + std::to_string(g) + " has condim " +
+                                     std::to_string(model_->geom_condim[g]) +
+                                     "; coupled geoms must be frictionless (condim=\"1\"), so "
+                                     "that MuJoCo adds no friction of its own");
     }
     // A pair coupled again (in either order) gets the new friction: one rule
     // with the Bullet adapter (a first version added it twice, doubling it).
@@ -127,15 +119,14 @@ class coupled_friction {
 
   /// couple() by the geoms' names; an unknown name is std::invalid_argument.
   std::size_t couple(const geom_name& a, const geom_name& b,
-                     const engines::pair_friction& friction) {
+                     const spinslide::pair_friction& friction) {
     return couple(lookup(a), lookup(b), friction);
   }
 
   /// One time step of `data` (made for the model) with the coupled pairs'
   /// friction: use it instead of mj_step.  qfrc_applied is left as it was.
   void step(mjData* data) {
-    if (data == nullptr)
-      throw std::invalid_argument("spinslide::mujoco::coupled_friction::step: data is null");
+    detail::required("spinslide::mujoco::coupled_friction::step", "data", data);
     mj_step1(model_, data);
     mj_fwdActuation(model_, data);
     mj_fwdAcceleration(model_, data);
@@ -157,14 +148,13 @@ class coupled_friction {
     add_to(data->qfrc_applied, -1.0);
   }
 
-  /// The last step at pair `index` (as couple() returned it); an index
-  /// beyond the pairs coupled is std::out_of_range, naming both.
+  /// The last step at pair `index` (as couple() returned it), its geom a
+  /// as the first body; an index beyond the pairs coupled is
+  /// std::out_of_range, naming both.
   const pair_report& report(std::size_t index) const {
-    if (index >= pairs_.size())
-      throw std::out_of_range("spinslide::mujoco::coupled_friction::report: pair " +
-                              std::to_string(index) + ", but " + std::to_string(pairs_.size()) +
-                              " pairs are coupled");
-    return pairs_[index].report;
+    return pairs_[detail::checked_index("spinslide::mujoco::coupled_friction::report", "pair",
+                                        index, pairs_.size())]
+        .report;
   }
 
   /// How the last step's joint solve of the pairs went (its last pass):
@@ -178,61 +168,69 @@ class coupled_friction {
  private:
   using vec3 = std::array<double, 3>;
   struct coupled_pair {
-    coupled_pair(int first, int second, const engines::pair_friction& f)
+    coupled_pair(int first, int second, const spinslide::pair_friction& f)
         : a(first), b(second), friction(f) {}
     int a, b;
-    engines::pair_friction friction;
+    spinslide::pair_friction friction;
     pair_report report{};
-    bool active = false;       // in contact this step
-    std::vector<double> rows;  // 3×nv: t1, t2 and spin rows of the relative motion
-    vec3 free_motion{};        // the relative motion at the step's end without friction
-    vec3 impulse{};            // (P_x, P_y, L) on geom a's body
+    bool active = false;         // in contact this step
+    std::array<vec3, 3> axes{};  // t1, t2, n
+    std::vector<double> rows;    // 3×nv: t1, t2 and spin rows of the relative motion
+    vec3 free_motion{};          // the relative motion at the step's end without friction
+    vec3 impulse{};              // (P_x, P_y, L) on geom a's body
   };
   static constexpr int max_corrections = 3;
 
   static const mjModel* require_model(const mjModel* model) {
-    if (model == nullptr)
-      throw std::invalid_argument("spinslide::mujoco::coupled_friction: the model is null");
+    static const char* function = "spinslide::mujoco::coupled_friction::coupled_friction";
+    detail::required(function, "the model", model);
     if (model->opt.integrator == mjINT_RK4)
-      throw std::invalid_argument(
-          "spinslide::mujoco::coupled_friction: the RK4 integrator does not split into "
-          "mj_step1/mj_step2; use Euler or implicit");
+      detail::refuse(function,
+                     "the RK4 integrator does not split into mj_step1/mj_step2; use Euler or "
+                     "implicit");
     return model;
   }
 
   geom_id lookup(const geom_name& name) const {
     const int id = mj_name2id(model_, mjOBJ_GEOM, name.value.c_str());
     if (id < 0)
-      throw std::invalid_argument("spinslide::mujoco::coupled_friction::couple: no geom named '" +
-                                  name.value + "'");
+      detail::refuse("spinslide::mujoco::coupled_friction::couple",
+                     "no geom named '" + name.value + "'");
     return geom_id{id};
   }
 
-  // Sums the pair's contacts: N, the N-weighted centre, the deepest
-  // penetration and the normal from geom a to geom b.
+  // Sums the pair's contacts: Λ = N h, the N-weighted centre, the deepest
+  // penetration and the normal from geom a to geom b (not yet of unit
+  // length).
   void gather(coupled_pair& pair, const mjData* data) const {
     pair_report& r = pair.report;
     r = pair_report{};
+    r.step = model_->opt.timestep;
+    double force = 0;
     for (int i = 0; i < data->ncon; ++i) {
       const mjContact& c = data->contact[i];
       const bool forward = c.geom1 == pair.a && c.geom2 == pair.b;
       if (!forward && !(c.geom1 == pair.b && c.geom2 == pair.a)) continue;
       if (c.efc_address < 0) continue;
       if (c.dim != 1)
-        throw std::logic_error(
-            "spinslide::mujoco::coupled_friction: a coupled pair has a contact with friction "
-            "(an explicit <pair> with condim > 1?)");
+        detail::refuse("spinslide::mujoco::coupled_friction::step",
+                       "a coupled pair has a contact with friction (an explicit <pair> with "
+                       "condim " +
+                           std::to_string(c.dim) + "?)");
       std::array<mjtNum, 6> f{};
       mj_contactForce(model_, data, i, f.data());
       const double sign = forward ? 1.0 : -1.0;
       ++r.contacts;
-      r.normal_force += f[0];
+      force += f[0];
       for (std::size_t k = 0; k < 3; ++k) {
         r.centre[k] += f[0] * c.pos[k];
         r.normal[k] += sign * c.frame[k];
       }
       r.penetration = std::fmax(r.penetration, -c.dist);
     }
+    if (force > 0)
+      for (double& x : r.centre) x /= force;
+    r.normal_impulse = force * r.step;
   }
 
   // The rows of the pair's relative motion (a against b) at the centre:
@@ -261,18 +259,15 @@ class coupled_friction {
     pair_report& r = pair.report;
     const double n_length = std::sqrt(r.normal[0] * r.normal[0] + r.normal[1] * r.normal[1] +
                                       r.normal[2] * r.normal[2]);
-    pair.active = r.normal_force > 0 && n_length > 0;
+    pair.active = r.normal_impulse > 0 && n_length > 0;
     if (!pair.active) {
       pair.friction.forget();
       pair.impulse = {0, 0, 0};
-      r.ratio = std::nan("");
       return false;
     }
-    for (std::size_t k = 0; k < 3; ++k) {
-      r.centre[k] /= r.normal_force;
-      r.normal[k] /= n_length;
-    }
-    relative_rows(pair, tangent_axes(r.normal), data);
+    for (double& x : r.normal) x /= n_length;
+    pair.axes = tangent_axes(r.normal);
+    relative_rows(pair, pair.axes, data);
     pair.free_motion = end_of_step_motion(pair, data);
     r.patch_radius = pair.friction.radius(r.penetration);
     return true;
@@ -371,7 +366,7 @@ class coupled_friction {
     for (const std::size_t i : active_) {
       coupled_pair& pair = pairs_[i];
       joint_.push_back(engines::joint_pair{std::ref(pair.friction), pair.free_motion,
-                                           normal_impulse<double>{pair.report.normal_force * h},
+                                           normal_impulse<double>{pair.report.normal_impulse},
                                            pair.report.penetration});
     }
     last_solve_ = solver_.solve(joint_, coupling_);
@@ -380,8 +375,10 @@ class coupled_friction {
       pair.report.sticking = joint_[k].sticking;
       pair.report.ratio = joint_[k].ratio;
       pair.impulse = joint_[k].impulse;
-      pair.report.force = {pair.impulse[0] / h, pair.impulse[1] / h};
-      pair.report.torque = pair.impulse[2] / h;
+      for (std::size_t c = 0; c < 3; ++c)
+        pair.report.friction_impulse[c] =
+            pair.axes[0][c] * pair.impulse[0] + pair.axes[1][c] * pair.impulse[1];
+      pair.report.spin_impulse = pair.impulse[2];
       for (std::size_t row = 0; row < 3; ++row)
         for (std::size_t j = 0; j < nv; ++j)
           generalized_[j] += pair.rows[row * nv + j] * pair.impulse[row] / h;
