@@ -98,6 +98,25 @@ TEST(JointPairs, PairsThatShareNoBodyAreEachTheirOwnLaw) {
   EXPECT_NEAR(pairs[0].impulse[2], p.torque, 1e-15);
 }
 
+// Three pairs on one body, W = J M⁻¹ Jᵀ for random rows J (9 × 6), with a
+// little of each pair's own compliance.
+pair_coupling three_pairs_on_one_body(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::array<std::array<double, 6>, 9> j{};
+  for (auto& row : j)
+    for (double& x : row) x = u(rng);
+  pair_coupling w(3);
+  for (std::size_t p = 0; p < 3; ++p)
+    for (std::size_t q = 0; q < 3; ++q)
+      for (std::size_t a = 0; a < 3; ++a)
+        for (std::size_t b = 0; b < 3; ++b) {
+          double sum = 0;
+          for (std::size_t k = 0; k < 6; ++k) sum += j[3 * p + a][k] * j[3 * q + b][k];
+          w.at(p, q)[a][b] = sum + (p == q && a == b ? 0.01 : 0.0);
+        }
+  return w;
+}
+
 // ½ (P − z)ᵀ W (P − z) over the stacked impulses, z = −W⁻¹s taken as the
 // energy of the slip after: ½ (s + WP)ᵀ W⁺ (s + WP) needs W⁻¹; instead
 // the energy's change from P = 0, Pᵀs + ½ PᵀWP, which differs by a constant.
@@ -126,19 +145,7 @@ TEST(JointPairs, NoFeasibleNeighbourLeavesLessEnergy) {
   std::mt19937_64 rng(2703);
   std::uniform_real_distribution<double> u(-1, 1), u01(0, 1);
   for (int n = 0; n < 40; ++n) {
-    // Three pairs on one body: W = J M⁻¹ Jᵀ for random rows J (9 × 6).
-    std::array<std::array<double, 6>, 9> j{};
-    for (auto& row : j)
-      for (double& x : row) x = u(rng);
-    pair_coupling w(3);
-    for (std::size_t p = 0; p < 3; ++p)
-      for (std::size_t q = 0; q < 3; ++q)
-        for (std::size_t a = 0; a < 3; ++a)
-          for (std::size_t b = 0; b < 3; ++b) {
-            double sum = 0;
-            for (std::size_t k = 0; k < 6; ++k) sum += j[3 * p + a][k] * j[3 * q + b][k];
-            w.at(p, q)[a][b] = sum + (p == q && a == b ? 0.01 : 0.0);
-          }
+    const pair_coupling w = three_pairs_on_one_body(rng);
     std::vector<pair_friction> settings{disk_pair(0.3, 0.5), disk_pair(0.3, 0.5),
                                         disk_pair(0.3, 0.5)};
     std::vector<joint_pair> pairs;
@@ -162,6 +169,75 @@ TEST(JointPairs, NoFeasibleNeighbourLeavesLessEnergy) {
       EXPECT_GE(energy(w, other, s), e - 1e-12 * (1 + std::fabs(e))) << n << ", " << trial;
     }
   }
+}
+
+// The slips after the step, s + W P.
+std::vector<vec3> slips_after(const pair_coupling& w, const std::vector<joint_pair>& pairs) {
+  std::vector<vec3> out;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    vec3 s = pairs[i].free_motion;
+    for (std::size_t j = 0; j < pairs.size(); ++j) {
+      const vec3 moved = detail::multiply(w.at(i, j), pairs[j].impulse);
+      for (std::size_t k = 0; k < 3; ++k) s[k] += moved[k];
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+// issue 27 - the sweeps start from the impulses given (an engine passes the
+// pair's last step's).  From any start they end at the same motion (the
+// slips after the step of the cold solve, to the tolerance); from the
+// answer itself the first sweep changes nothing and the second confirms it.
+TEST(JointPairs, AnyStartEndsAtTheSameMotion) {
+  std::mt19937_64 rng(2704);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int n = 0; n < 40; ++n) {
+    const pair_coupling w = three_pairs_on_one_body(rng);
+    std::vector<pair_friction> settings{disk_pair(0.3, 0.5), disk_pair(0.3, 0.5),
+                                        disk_pair(0.3, 0.5)};
+    std::vector<joint_pair> cold;
+    for (std::size_t p = 0; p < 3; ++p)
+      cold.push_back(
+          {std::ref(settings[p]), vec3{u(rng), u(rng), u(rng)}, normal_impulse<double>{0.5}, 0});
+    ASSERT_TRUE(engines::solve_jointly(cold, w, {1e-12, 2000}).converged) << n;
+    const std::vector<vec3> expected = slips_after(w, cold);
+    std::vector<joint_pair> again = cold, anywhere = cold;
+    for (auto& p : anywhere) p.impulse = {u(rng), u(rng), u(rng)};
+    const auto from_answer = engines::solve_jointly(again, w, {1e-12, 2000});
+    const auto from_anywhere = engines::solve_jointly(anywhere, w, {1e-12, 2000});
+    EXPECT_LE(from_answer.sweeps, 2) << n;
+    ASSERT_TRUE(from_anywhere.converged) << n;
+    for (const auto* solved : {&again, &anywhere}) {
+      const std::vector<vec3> got = slips_after(w, *solved);
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t k = 0; k < 3; ++k)
+          EXPECT_NEAR(got[i][k], expected[i][k], 1e-9) << n << ", pair " << i;
+    }
+  }
+}
+
+// One pair is one projection, whatever the start: impulse_friction's answer
+// bit for bit.
+TEST(JointPairs, OnePairIsItsLawWhateverTheStart) {
+  std::mt19937_64 rng(2705);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const matrix a = spinslide_test::random_spd(rng, 0.05, 0);
+  pair_coupling w(1);
+  w.at(0, 0) = a;
+  pair_friction only = disk_pair(0.1, 0.4);
+  const vec3 s{0.3, -0.1, 2};
+  std::vector<joint_pair> pairs{
+      {std::ref(only), s, normal_impulse<double>{0.2}, 0, vec3{u(rng), u(rng), u(rng)}}};
+  const auto outcome = engines::solve_jointly(pairs, w);
+  EXPECT_EQ(outcome.sweeps, 1);
+  const auto p = impulse_friction(
+      uniform_disk<>(), std::array<double, 2>{s[0], s[1]}, s[2], planar_metric<double>(a),
+      impulse_contact<double>{patch_radius<double>{0.1}, normal_impulse<double>{0.2},
+                              friction_coefficient<double>{0.4}});
+  EXPECT_EQ(pairs[0].impulse[0], p.force[0]);
+  EXPECT_EQ(pairs[0].impulse[1], p.force[1]);
+  EXPECT_EQ(pairs[0].impulse[2], p.torque);
 }
 
 TEST(JointPairs, CouplingOfAnotherSizeIsRefused) {

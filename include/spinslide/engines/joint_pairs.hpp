@@ -90,7 +90,9 @@ struct joint_pair {
   normal_impulse<double> normal{0};
   /// δ, the penetration (for a hertz_radius).
   double penetration = 0;
-  /// Out: (P_x, P_y, L), the friction impulse on the pair's first body.
+  /// In: where the sweeps start (the pair's impulse of the last step, which
+  /// in a steady contact is nearly the answer; or 0).  Out: (P_x, P_y, L),
+  /// the friction impulse on the pair's first body.
   std::array<double, 3> impulse{};
   /// Out: the pair stops exactly.
   bool sticking = false;
@@ -163,14 +165,19 @@ class joint_solver {
       own_.push_back(conditioned_metric(w.at(i, i)));
       const auto z = detail::multiply(own_.back().inverse(), pairs[i].free_motion);
       scale += detail::dot(z, pairs[i].free_motion);
-      pairs[i].impulse = {0, 0, 0};
       slip_.push_back(pairs[i].free_motion);  // s_i + Σ_j W_ij P_j: the slip after the step
     }
     joint_outcome out;
     if (n == 1) {  // one block: its projection is the exact answer, no sweep to check it
+      pairs[0].impulse = {0, 0, 0};
       update(pairs, w, 0);
       return {1, true};
     }
+    for (std::size_t i = 0; i < n; ++i)  // the slips after the starting impulses
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto moved = detail::multiply(w.at(i, j), pairs[j].impulse);
+        for (std::size_t k = 0; k < 3; ++k) slip_[i][k] += moved[k];
+      }
     for (out.sweeps = 1; out.sweeps <= settings.max_sweeps; ++out.sweeps) {
       before_ = slip_;
       for (std::size_t i = 0; i < n; ++i) update(pairs, w, i);

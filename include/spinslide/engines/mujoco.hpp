@@ -137,12 +137,21 @@ class coupled_friction {
     couple_active(data);
     impulses();
     if (linear_update(data)) {  // mj_step2 without its constraint solve
-      mj_sensorAcc(model_, data);
-      mj_checkAcc(model_, data);
-      mj_Euler(model_, data);
+      finish_euler(data);
       return;
     }
-    for (int pass = 0; pass < max_corrections && !settled(data); ++pass) impulses();
+    for (int pass = 0; pass < max_corrections; ++pass) {
+      if (settled(data)) {
+        // settled() has just solved MuJoCo's constraints with this friction:
+        // what mj_step2 would solve again.
+        if (model_->opt.integrator == mjINT_EULER) {
+          finish_euler(data);
+          return;
+        }
+        break;
+      }
+      impulses();
+    }
     add_to(data->qfrc_applied, 1.0);
     mj_step2(model_, data);
     add_to(data->qfrc_applied, -1.0);
@@ -308,25 +317,33 @@ class coupled_friction {
       if (!resisting(data, r)) continue;
       constraint_row(data, r);
       const double d = data->efc_D[r];
-      for (std::size_t i = 0; i < nv; ++i) {
-        if (row_[i] == 0) continue;
-        for (std::size_t j = 0; j < nv; ++j) hessian_[i * nv + j] += d * row_[i] * row_[j];
-      }
+      for (const std::size_t i : nonzero_)
+        for (const std::size_t j : nonzero_) hessian_[i * nv + j] += d * row_[i] * row_[j];
     }
     mju_cholFactor(hessian_.data(), model_->nv, mjMINVAL);
   }
 
-  // Row r of MuJoCo's constraint Jacobian, dense, into row_.
+  // Row r of MuJoCo's constraint Jacobian, dense, into row_, and the
+  // indices of its nonzero entries into nonzero_ (a contact's row touches
+  // only the joints between its body and the root: H's update is
+  // nonzero² terms, not nv²).
   void constraint_row(const mjData* data, int r) {
     const auto nv = static_cast<std::size_t>(model_->nv);
     std::fill(row_.begin(), row_.end(), 0.0);
+    nonzero_.clear();
     if (mj_isSparse(model_)) {
       const int start = data->efc_J_rowadr[r];
-      for (int k = 0; k < data->efc_J_rownnz[r]; ++k)
-        row_[static_cast<std::size_t>(data->efc_J_colind[start + k])] = data->efc_J[start + k];
+      for (int k = 0; k < data->efc_J_rownnz[r]; ++k) {
+        const auto column = static_cast<std::size_t>(data->efc_J_colind[start + k]);
+        row_[column] = data->efc_J[start + k];
+        if (row_[column] != 0) nonzero_.push_back(column);
+      }
     } else {
       const mjtNum* from = data->efc_J + static_cast<std::size_t>(r) * nv;
-      std::copy(from, from + nv, row_.begin());
+      for (std::size_t i = 0; i < nv; ++i) {
+        row_[i] = from[i];
+        if (from[i] != 0) nonzero_.push_back(i);
+      }
     }
   }
 
@@ -365,9 +382,11 @@ class coupled_friction {
     joint_.clear();
     for (const std::size_t i : active_) {
       coupled_pair& pair = pairs_[i];
+      // Started from the pair's last impulse (0 after a step without
+      // contact): in a steady contact the sweeps then have little to do.
       joint_.push_back(engines::joint_pair{std::ref(pair.friction), pair.free_motion,
                                            normal_impulse<double>{pair.report.normal_impulse},
-                                           pair.report.penetration});
+                                           pair.report.penetration, pair.impulse});
     }
     last_solve_ = solver_.solve(joint_, coupling_);
     for (std::size_t k = 0; k < active_.size(); ++k) {
@@ -453,6 +472,14 @@ class coupled_friction {
     return done;
   }
 
+  // The rest of mj_step2 once the accelerations are those with the
+  // friction (Euler's integrator only: the implicit one needs mj_step2).
+  void finish_euler(mjData* data) const {
+    mj_sensorAcc(model_, data);
+    mj_checkAcc(model_, data);
+    mj_Euler(model_, data);
+  }
+
   void add_to(mjtNum* qfrc, double sign) const {
     const auto nv = static_cast<std::size_t>(model_->nv);
     for (std::size_t i = 0; i < nv; ++i) qfrc[i] += sign * generalized_[i];
@@ -473,6 +500,7 @@ class coupled_friction {
   const mjModel* model_;
   std::vector<coupled_pair> pairs_;
   std::vector<double> jacobian_a_, jacobian_b_, solved_, generalized_, hessian_, row_;
+  std::vector<std::size_t> nonzero_;  // the nonzero columns of row_
   std::vector<double> delta_, acceleration_, jar_;
   std::vector<int> states_;
   std::vector<std::size_t> active_;  // the pairs in contact this step
