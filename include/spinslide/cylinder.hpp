@@ -343,6 +343,18 @@ cylinder_friction<Real> tipped_cylinder() {
   return {nan, nan, nan, nan, nan, nan, cylinder_contact::tipped};
 }
 
+/// The root of `excess` in [lo, hi], where it falls from at_lo > 0 to
+/// at_hi < 0.
+template <class Real, class Excess, class Policy>
+Real bisected(Excess excess, Real lo, Real hi, Real at_lo, Real at_hi, const Policy& /*digits*/) {
+  boost::uintmax_t iterations = 100;
+  const auto r = boost::math::tools::toms748_solve(
+      excess, lo, hi, at_lo, at_hi,
+      boost::math::tools::eps_tolerance<Real>(boost::math::policies::digits<Real, Policy>() - 3),
+      iterations);
+  return (r.first + r.second) / 2;
+}
+
 /// The equilibrium on a segment (λ beyond the full-contact range).
 template <class Real, class Policy>
 cylinder_friction<Real> partial_contact(Real eps, Real lambda, const Policy& pol) {
@@ -350,19 +362,24 @@ cylinder_friction<Real> partial_contact(Real eps, Real lambda, const Policy& pol
   Real lo = 0, hi = 0;
   if (!bracket_branch(eps, lambda, lo, hi, pol)) return tipped_cylinder<Real>();
   auto excess = [&](Real theta) { return branch_at(eps, theta, pol).lambda - lambda; };
-  boost::uintmax_t iterations = 100;
-  const auto r = boost::math::tools::toms748_solve(
-      excess, lo, hi,
-      boost::math::tools::eps_tolerance<Real>(boost::math::policies::digits<Real, Policy>() - 3),
-      iterations);
-  const auto b = branch_at(eps, (r.first + r.second) / 2, pol);
+  const Real at_lo = excess(lo), at_hi = excess(hi);
+  // Just past lift-off the closed form's full-contact test and the branch's
+  // λ at the whole face (θ = π) differ by rounding (1.6e-12 at ε = 1.002):
+  // the branch may then already carry λ at θ = π, where the closed form did
+  // not.  The face is in full contact to that rounding; its answer is the
+  // branch's point there (an uncaught toms748 "do not bracket" before).
+  const Real theta = !(at_hi < 0)   ? hi
+                     : !(at_lo > 0) ? lo
+                                    : bisected(excess, lo, hi, at_lo, at_hi, pol);
+  const auto b = branch_at(eps, theta, pol);
   return {b.f.force_x,
           -b.f.force_y,
           b.f.torque,
           b.f.centre * cos(b.phi),
           b.f.centre * sin(b.phi),
           b.theta,
-          cylinder_contact::partial};
+          theta == boost::math::constants::pi<Real>() ? cylinder_contact::full
+                                                      : cylinder_contact::partial};
 }
 
 /// Pure sliding (ε = ∞): F = −e_v whatever the pressure, so the centre of
