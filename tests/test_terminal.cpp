@@ -329,4 +329,42 @@ TEST(TerminalMotion, RegressionPadeFormWithExtremeMomentsSlides) {
   }
 }
 
+// issue 28 - at the exact edges of a profile's window (f's limit g(0) or
+// g(∞) is 0, so f's departure from 0 at that end is below rounding), the
+// overload with a start reported rounding noise as a zero (Hertz at γ = 1/5
+// from ε = 0.5, 1e7 or 1e9: ε₀ ≈ 4e7) or the start itself (Hertz at γ = 1/2
+// and the disk at γ = 2/3 from 1e-9; the disk at γ = 1/4 from 1e9), where
+// the one-argument call, from the next-order term, says pure sliding or
+// pure spinning.  With one attractor they now agree from every start.
+template <class Profile>
+void expect_starts_agree(const Profile& p, double gamma, const char* name) {
+  const terminal_state<double> whole = terminal_motion(p, gamma);
+  for (const double start :
+       {1e-300, 1e-12, 1e-9, 1e-3, 0.5, 1.0, 2.0, 1e3, 1e7, 1e9, 1e12, 1e300}) {
+    const terminal_state<double> from = terminal_motion(p, gamma, start);
+    EXPECT_EQ(from.regime, whole.regime) << name << ", gamma " << gamma << ", from " << start;
+    if (whole.regime == terminal_regime::sliding_and_spinning) {
+      EXPECT_NEAR(from.ratio, whole.ratio, 1e-12 * whole.ratio) << name << ", from " << start;
+    }
+  }
+}
+
+template <class Profile>
+void expect_edges_agree(const Profile& p, const char* name) {
+  const auto window = terminal_window(p);
+  for (const double gamma : {window.lower, window.upper, (window.lower + window.upper) / 2})
+    expect_starts_agree(p, gamma, name);
+}
+
+TEST(TerminalMotion, RegressionStartsAgreeWithTheWholeFlowAtWindowEdges) {
+  expect_starts_agree(hertz<>(), 0.2, "hertz");
+  expect_starts_agree(hertz<>(), 0.5, "hertz");
+  expect_starts_agree(uniform_disk<>(), 2.0 / 3, "disk");
+  expect_starts_agree(uniform_disk<>(), 0.25, "disk");
+  expect_edges_agree(uniform_disk<>(), "disk");
+  expect_edges_agree(hertz<>(), "hertz");
+  expect_edges_agree(boussinesq<>(), "boussinesq");
+  expect_edges_agree(annulus<>(0.5), "annulus 0.5");
+}
+
 }  // namespace
