@@ -39,6 +39,7 @@
 #include <mujoco/mujoco.h>
 #include <spinslide/detail/checks.hpp>
 #include <spinslide/engines/joint_pairs.hpp>
+#include <spinslide/engines/mujoco_hessian.hpp>
 #include <spinslide/pair_friction.hpp>
 #include <spinslide/pair_report.hpp>
 
@@ -81,7 +82,6 @@ class coupled_friction {
     jacobian_a_.assign(6 * nv, 0.0);
     jacobian_b_.assign(6 * nv, 0.0);
     generalized_.assign(nv, 0.0);
-    row_.assign(nv, 0.0);
   }
 
   /// Couples geoms `a` and `b` with `friction`; returns the pair's index for
@@ -282,84 +282,15 @@ class coupled_friction {
     return true;
   }
 
-  // True for a constraint row of MuJoCo's last solve that resists motion:
-  // in its quadratic zone (or in an elliptic cone, taken as quadratic), or,
-  // after a dual solver (whose states are not kept), carrying a force.
-  bool resisting(const mjData* data, int row) const {
-    if (mj_isDual(model_)) return data->efc_force[row] != 0;
-    const int state = data->efc_state[row];
-    return state == mjCNSTRSTATE_QUADRATIC || state == mjCNSTRSTATE_CONE;
-  }
-
   // The active pairs' joint inverse mass W = J H⁻¹ Jᵀ (3×3 blocks), H the
-  // Hessian of MuJoCo's constraint solve (hessian()).
-  void couple_active(mjData* data) {
-    const auto nv = static_cast<std::size_t>(model_->nv);
-    const std::size_t n = active_.size();
-    coupling_.reset(n);
-    if (n == 0) return;
-    hessian(data);
-    solved_.assign(3 * n * nv, 0.0);
-    for (std::size_t k = 0; k < n; ++k)
-      for (std::size_t row = 0; row < 3; ++row)
-        mju_cholSolve(solved_.data() + (3 * k + row) * nv, hessian_.data(),
-                      pairs_[active_[k]].rows.data() + row * nv, model_->nv);
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < n; ++j) coupling_.at(i, j) = block(i, j);
-  }
-
-  // H = M + Σ D_r J_rᵀJ_r over the resisting rows, factorized in place.
-  void hessian(const mjData* data) {
-    const auto nv = static_cast<std::size_t>(model_->nv);
-    hessian_.assign(nv * nv, 0.0);
-    mj_fullM(model_, hessian_.data(), data->qM);
-    for (int r = 0; r < data->nefc; ++r) {
-      if (!resisting(data, r)) continue;
-      constraint_row(data, r);
-      const double d = data->efc_D[r];
-      for (const std::size_t i : nonzero_)
-        for (const std::size_t j : nonzero_) hessian_[i * nv + j] += d * row_[i] * row_[j];
-    }
-    mju_cholFactor(hessian_.data(), model_->nv, mjMINVAL);
-  }
-
-  // Row r of MuJoCo's constraint Jacobian, dense, into row_, and the
-  // indices of its nonzero entries into nonzero_ (a contact's row touches
-  // only the joints between its body and the root: H's update is
-  // nonzero² terms, not nv²).
-  void constraint_row(const mjData* data, int r) {
-    const auto nv = static_cast<std::size_t>(model_->nv);
-    std::fill(row_.begin(), row_.end(), 0.0);
-    nonzero_.clear();
-    if (mj_isSparse(model_)) {
-      const int start = data->efc_J_rowadr[r];
-      for (int k = 0; k < data->efc_J_rownnz[r]; ++k) {
-        const auto column = static_cast<std::size_t>(data->efc_J_colind[start + k]);
-        row_[column] = data->efc_J[start + k];
-        if (row_[column] != 0) nonzero_.push_back(column);
-      }
-    } else {
-      const mjtNum* from = data->efc_J + static_cast<std::size_t>(r) * nv;
-      for (std::size_t i = 0; i < nv; ++i) {
-        row_[i] = from[i];
-        if (from[i] != 0) nonzero_.push_back(i);
-      }
-    }
-  }
-
-  // W_ij = J_i (H⁻¹ J_jᵀ), from the solved columns.
-  engines::pair_coupling::block block(std::size_t i, std::size_t j) const {
-    const auto nv = static_cast<std::size_t>(model_->nv);
-    const auto& rows = pairs_[active_[i]].rows;
-    engines::pair_coupling::block out{};
-    for (std::size_t a = 0; a < 3; ++a)
-      for (std::size_t b = 0; b < 3; ++b) {
-        double sum = 0;
-        for (std::size_t q = 0; q < nv; ++q)
-          sum += rows[a * nv + q] * solved_[(3 * j + b) * nv + q];
-        out[a][b] = sum;
-      }
-    return out;
+  // Hessian of MuJoCo's constraint solve (mujoco_hessian.hpp).
+  void couple_active(const mjData* data) {
+    coupling_.reset(active_.size());
+    if (active_.empty()) return;
+    hessian_.factor(data);
+    active_rows_.clear();
+    for (const std::size_t i : active_) active_rows_.push_back(pairs_[i].rows.data());
+    hessian_.inverse_mass(active_rows_, coupling_);
   }
 
   // The pair's relative motion at the end of the step, from qacc as it is.
@@ -420,7 +351,7 @@ class coupled_friction {
     for (const int state : states_)
       if (state == mjCNSTRSTATE_CONE) return false;
     delta_.assign(n, 0.0);
-    mju_cholSolve(delta_.data(), hessian_.data(), generalized_.data(), nv);
+    hessian_.solve(delta_.data(), generalized_.data());
     acceleration_.assign(data->qacc, data->qacc + nv);
     for (std::size_t i = 0; i < n; ++i) acceleration_[i] += delta_[i];
     jar_.assign(static_cast<std::size_t>(nefc), 0.0);
@@ -499,8 +430,9 @@ class coupled_friction {
 
   const mjModel* model_;
   std::vector<coupled_pair> pairs_;
-  std::vector<double> jacobian_a_, jacobian_b_, solved_, generalized_, hessian_, row_;
-  std::vector<std::size_t> nonzero_;  // the nonzero columns of row_
+  std::vector<double> jacobian_a_, jacobian_b_, generalized_;
+  constraint_hessian hessian_{model_};
+  std::vector<const double*> active_rows_;  // the active pairs' rows, for hessian_
   std::vector<double> delta_, acceleration_, jar_;
   std::vector<int> states_;
   std::vector<std::size_t> active_;  // the pairs in contact this step
