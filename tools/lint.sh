@@ -24,6 +24,9 @@
 #      BUILD_DIR; nothing is built).  A test source missing from
 #      compile_commands.json (not built by CMake) fails the step.  These also report findings in the library's headers that
 #      only the tests' template instantiations reach.
+#    - the LAMMPS plugin's sources, engines/lammps/*.cpp, with the headers of
+#      the LAMMPS source tree engines/lammps/build_lammps.sh unpacks (below;
+#      skipped, with a note, where there is none).
 #    The clang-tidy runs go LINT_JOBS (default 2) at a time.
 #
 # Any finding or unformatted file fails the step (exit 1); the summary at the
@@ -110,6 +113,23 @@ for f in "${test_sources[@]}"; do
   fi
 done
 
+# The LAMMPS plugin's sources (engines/lammps/*.cpp; issue 28), with the
+# headers of the LAMMPS source tree that engines/lammps/build_lammps.sh
+# unpacks (build/lammps/source/src, or LAMMPS_SOURCE_DIR) and MPI's, the
+# flags the plugin's CMake project builds with; skipped with a note where
+# either is missing (CI builds LAMMPS before this step).
+lammps_src="${LAMMPS_SOURCE_DIR:-$root/build/lammps/source/src}"
+LINT_PLUGIN_FLAGS=""
+if [ -f "$lammps_src/pair.h" ] && command -v mpicxx >/dev/null; then
+  mpi_include="$(mpicxx --showme:incdirs | sed 's/[^ ][^ ]*/-isystem &/g')"
+  LINT_PLUGIN_FLAGS="-std=c++17 -I$root/include -isystem $lammps_src $mpi_include"
+  LINT_PLUGIN_FLAGS+=" -DLAMMPS_SMALLBIG -DLMP_PLUGIN -DLAMMPS_EXCEPTIONS"
+  for f in engines/lammps/*.cpp; do joblist+=("plugin:$f"); done
+else
+  echo "lint: skipped engines/lammps/*.cpp: no LAMMPS source tree at $lammps_src" \
+       "(engines/lammps/build_lammps.sh) or no mpicxx"
+fi
+
 lint_one() {
   local job="$1" log name
   name="$(echo "$job" | tr '/:+' '__p')"
@@ -118,6 +138,9 @@ lint_one() {
     headers:*)
       "$LINT_TIDY" --quiet "$LINT_OUT/all_headers.cpp" -- -x c++ "-std=${job#headers:}" \
         -I"$LINT_ROOT/include" >"$log" 2>&1 ;;
+    plugin:*)
+      # shellcheck disable=SC2086  # the flags are words
+      "$LINT_TIDY" --quiet "$LINT_ROOT/${job#plugin:}" -- $LINT_PLUGIN_FLAGS >"$log" 2>&1 ;;
     *)
       "$LINT_TIDY" --quiet -p "$LINT_BUILD" "$LINT_ROOT/$job" >"$log" 2>&1 ;;
   esac
@@ -130,7 +153,7 @@ lint_one() {
   fi
 }
 export -f lint_one
-export LINT_OUT="$out" LINT_TIDY="$tidy" LINT_ROOT="$root" LINT_BUILD="$build"
+export LINT_OUT="$out" LINT_TIDY="$tidy" LINT_ROOT="$root" LINT_BUILD="$build" LINT_PLUGIN_FLAGS
 
 tidy_start=$SECONDS
 printf '%s\n' "${joblist[@]}" | xargs -P "$jobs" -n 1 bash -c 'lint_one "$1"' _

@@ -72,52 +72,11 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
   coupled = 1;
   legacy_moduli = 0;
 
-  int nwalls = 0;
-  for (int iarg = 7; iarg < narg;) {
-    const std::string key = arg[iarg];
-    if (key == "xplane" || key == "yplane" || key == "zplane") {
-      if (iarg + 2 >= narg)
-        error->all(FLERR, "Illegal fix wall/gran/spinslide command: {} needs lo and hi", key);
-      axis = key[0] - 'x';
-      lo = strcmp(arg[iarg + 1], "NULL") == 0 ? -kFarAway
-                                              : utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      hi = strcmp(arg[iarg + 2], "NULL") == 0 ? kFarAway
-                                              : utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-      ++nwalls;
-      iarg += 3;
-      continue;
-    }
-    if (iarg + 1 >= narg)
-      error->all(FLERR, "Illegal fix wall/gran/spinslide command: {} needs a value", key);
-    const std::string value = arg[iarg + 1];
-    if (key == "xgammat") {
-      xgammat = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    } else if (key == "coupling") {
-      coupled = spinslide_lammps::either(value, {"yes", "on"}, {"no", "off"});
-      if (coupled < 0)
-        error->all(FLERR, "Illegal fix wall/gran/spinslide command: coupling {}", value);
-    } else if (key == "moduli") {
-      legacy_moduli = spinslide_lammps::either(value, {"legacy"}, {"exact"});
-      if (legacy_moduli < 0)
-        error->all(FLERR, "Illegal fix wall/gran/spinslide command: moduli {}", value);
-    } else {
-      error->all(FLERR, "Illegal fix wall/gran/spinslide command: unknown keyword {} ({})", key,
-                 kSyntax);
-    }
-    iarg += 2;
-  }
-  if (nwalls != 1)
+  if (parse_walls_and_options(narg, arg) != 1)
     error->all(FLERR,
                "Illegal fix wall/gran/spinslide command: give one of xplane, yplane, "
                "zplane lo hi");
-  if (!(e_one > 0.0)) error->all(FLERR, "Fix wall/gran/spinslide: E must be > 0");
-  if (!(nu_one > -1.0 && nu_one <= 0.5))
-    error->all(FLERR, "Fix wall/gran/spinslide: nu must be in (-1, 0.5]");
-  if (!(eta_n >= 0.0) || !(mu >= 0.0) || !(xgammat >= 0.0))
-    error->all(FLERR, "Fix wall/gran/spinslide: eta_n, mu and xgammat must be >= 0");
-  if (!(lo < hi)) error->all(FLERR, "Fix wall/gran/spinslide: the walls need lo < hi");
-  if (domain->periodicity[axis])
-    error->all(FLERR, "Fix wall/gran/spinslide: no wall in a periodic dimension");
+  check_parameters(e_one, nu_one);
 
   if (legacy_moduli) {
     // LAMMPS 29 Sep 2021 fix wall/gran's `hertz/material` and `mindlin NULL`
@@ -145,6 +104,65 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
     for (int k = 0; k < kHistSize; k++) history[i][k] = 0.0;
 
   dt = update->dt;
+}
+
+/* ---------------------------------------------------------------------- */
+
+// The keywords after the four numbers: the wall (xplane|yplane|zplane lo hi)
+// and the options; returns how many walls were given.
+int FixWallGranSpinslide::parse_walls_and_options(int narg, char** arg) {
+  int nwalls = 0;
+  for (int iarg = 7; iarg < narg;) {
+    const std::string key = arg[iarg];
+    if (key == "xplane" || key == "yplane" || key == "zplane") {
+      if (iarg + 2 >= narg)
+        error->all(FLERR, "Illegal fix wall/gran/spinslide command: {} needs lo and hi", key);
+      axis = key[0] - 'x';
+      lo = strcmp(arg[iarg + 1], "NULL") == 0 ? -kFarAway
+                                              : utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      hi = strcmp(arg[iarg + 2], "NULL") == 0 ? kFarAway
+                                              : utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      ++nwalls;
+      iarg += 3;
+      continue;
+    }
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Illegal fix wall/gran/spinslide command: {} needs a value", key);
+    parse_option(key, arg[iarg + 1]);
+    iarg += 2;
+  }
+  return nwalls;
+}
+
+// One option keyword and its value.
+void FixWallGranSpinslide::parse_option(const std::string& key, const char* arg) {
+  const std::string value = arg;
+  if (key == "xgammat") {
+    xgammat = utils::numeric(FLERR, arg, false, lmp);
+  } else if (key == "coupling") {
+    coupled = spinslide_lammps::either(value, {"yes", "on"}, {"no", "off"});
+    if (coupled < 0)
+      error->all(FLERR, "Illegal fix wall/gran/spinslide command: coupling {}", value);
+  } else if (key == "moduli") {
+    legacy_moduli = spinslide_lammps::either(value, {"legacy"}, {"exact"});
+    if (legacy_moduli < 0)
+      error->all(FLERR, "Illegal fix wall/gran/spinslide command: moduli {}", value);
+  } else {
+    error->all(FLERR, "Illegal fix wall/gran/spinslide command: unknown keyword {} ({})", key,
+               kSyntax);
+  }
+}
+
+// The material and the walls, checked.
+void FixWallGranSpinslide::check_parameters(double e_one, double nu_one) {
+  if (!(e_one > 0.0)) error->all(FLERR, "Fix wall/gran/spinslide: E must be > 0");
+  if (!(nu_one > -1.0 && nu_one <= 0.5))
+    error->all(FLERR, "Fix wall/gran/spinslide: nu must be in (-1, 0.5]");
+  if (!(eta_n >= 0.0) || !(mu >= 0.0) || !(xgammat >= 0.0))
+    error->all(FLERR, "Fix wall/gran/spinslide: eta_n, mu and xgammat must be >= 0");
+  if (!(lo < hi)) error->all(FLERR, "Fix wall/gran/spinslide: the walls need lo < hi");
+  if (domain->periodicity[axis])
+    error->all(FLERR, "Fix wall/gran/spinslide: no wall in a periodic dimension");
 }
 
 /* ---------------------------------------------------------------------- */

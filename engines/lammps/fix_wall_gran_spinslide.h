@@ -21,6 +21,8 @@
 
 #include "fix.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 
 class FixWallGranSpinslide : public Fix {
@@ -51,6 +53,10 @@ class FixWallGranSpinslide : public Fix {
   enum : int { kStatContacts = 0, kStatSliding, kStatForce, kStatTorque, kStatSize };
 
  protected:
+  int parse_walls_and_options(int narg, char** arg);
+  void parse_option(const std::string& key, const char* arg);
+  void check_parameters(double e_one, double nu_one);
+
   int axis = 2;           // the walls' normal: 0 x, 1 y, 2 z
   double lo = 0.0;        // the lower wall (-1e20 for none)
   double hi = 0.0;        // the upper wall (+1e20 for none)

@@ -42,6 +42,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <string>
 
@@ -112,6 +113,19 @@ PairGranularSpinslide::~PairGranularSpinslide() {
 
 /* ---------------------------------------------------------------------- */
 
+namespace {
+
+// The pair's effective mass m_i m_j/(m_i + m_j), or the other sphere's mass
+// where one is frozen (fix freeze: it does not move).
+double effective_mass(const double* rmass, const int* mask, int freeze_group_bit, int i, int j) {
+  double meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+  if (mask[i] & freeze_group_bit) meff = rmass[j];
+  if (mask[j] & freeze_group_bit) meff = rmass[i];
+  return meff;
+}
+
+}  // namespace
+
 void PairGranularSpinslide::compute(int eflag, int vflag) {
   ev_init(eflag, vflag);
   for (int k = 0; k < nextra; ++k) pvector[k] = 0.0;
@@ -161,7 +175,7 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radj = radius[j];
       const double radsum = radi + radj;
-      double* history = &allhistory[kHistSize * jj];
+      double* history = &allhistory[static_cast<std::ptrdiff_t>(kHistSize) * jj];
 
       if (rsq >= radsum * radsum) {
         // apart: forget the contact
@@ -175,9 +189,7 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
       const double rinv = 1.0 / r;
       const double nx = delx * rinv, ny = dely * rinv, nz = delz * rinv;
 
-      double meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
-      if (mask[i] & freeze_group_bit) meff = rmass[j];
-      if (mask[j] & freeze_group_bit) meff = rmass[i];
+      const double meff = effective_mass(rmass, mask, freeze_group_bit, i, j);
 
       spinslide_lammps::ContactState state;
       state.n[0] = nx;
@@ -213,7 +225,7 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
 
       if (tally) {
         ncontacts += 1.0;
-        if (capped) nsliding += 1.0;
+        nsliding += capped ? 1.0 : 0.0;
         sum_force += std::sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
         sum_torque += std::fabs(mt);
       }
