@@ -343,10 +343,11 @@ cylinder_friction<Real> tipped_cylinder() {
   return {nan, nan, nan, nan, nan, nan, cylinder_contact::tipped};
 }
 
-/// The root of `excess` in [lo, hi], where it falls from at_lo > 0 to
+/// The root of `excess` in [lo, hi] by TOMS 748, where it falls from at_lo > 0 to
 /// at_hi < 0.
 template <class Real, class Excess, class Policy>
-Real bisected(Excess excess, Real lo, Real hi, Real at_lo, Real at_hi, const Policy& /*digits*/) {
+Real root_between(Excess excess, Real lo, Real hi, Real at_lo, Real at_hi,
+                  const Policy& /*digits*/) {
   boost::uintmax_t iterations = 100;
   const auto r = boost::math::tools::toms748_solve(
       excess, lo, hi, at_lo, at_hi,
@@ -370,7 +371,7 @@ cylinder_friction<Real> partial_contact(Real eps, Real lambda, const Policy& pol
   // branch's point there (an uncaught toms748 "do not bracket" before).
   const Real theta = !(at_hi < 0)   ? hi
                      : !(at_lo > 0) ? lo
-                                    : bisected(excess, lo, hi, at_lo, at_hi, pol);
+                                    : root_between(excess, lo, hi, at_lo, at_hi, pol);
   const auto b = branch_at(eps, theta, pol);
   return {b.f.force_x,
           -b.f.force_y,
