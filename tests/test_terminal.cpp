@@ -14,6 +14,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "flow_zeros_reference.hpp"
@@ -336,23 +337,26 @@ TEST(TerminalMotion, RegressionPadeFormWithExtremeMomentsSlides) {
 // and the disk at γ = 2/3 from 1e-9; the disk at γ = 1/4 from 1e9), where
 // the one-argument call, from the next-order term, says pure sliding or
 // pure spinning.  With one attractor they now agree from every start.
-template <class Profile>
-void expect_starts_agree(const Profile& p, double gamma, const char* name) {
-  const terminal_state<double> whole = terminal_motion(p, gamma);
-  for (const double start :
-       {1e-300, 1e-12, 1e-9, 1e-3, 0.5, 1.0, 2.0, 1e3, 1e7, 1e9, 1e12, 1e300}) {
-    const terminal_state<double> from = terminal_motion(p, gamma, start);
+template <class Profile, class Real = typename Profile::value_type>
+void expect_starts_agree(const Profile& p, Real gamma, const char* name) {
+  const terminal_state<Real> whole = terminal_motion(p, gamma);
+  const Real tolerance = std::is_same<Real, float>::value ? Real(1e-5) : Real(1e-12);
+  for (const long double start : {1e-300L, 1e-30L, 1e-12L, 1e-9L, 1e-3L, 0.5L, 1.0L, 2.0L, 1e3L,
+                                  1e7L, 1e9L, 1e12L, 1e30L, 1e300L}) {
+    if (start < std::numeric_limits<Real>::min() || start > std::numeric_limits<Real>::max())
+      continue;
+    const terminal_state<Real> from = terminal_motion(p, gamma, static_cast<Real>(start));
     EXPECT_EQ(from.regime, whole.regime) << name << ", gamma " << gamma << ", from " << start;
     if (whole.regime == terminal_regime::sliding_and_spinning) {
-      EXPECT_NEAR(from.ratio, whole.ratio, 1e-12 * whole.ratio) << name << ", from " << start;
+      EXPECT_NEAR(from.ratio, whole.ratio, tolerance * whole.ratio) << name << ", from " << start;
     }
   }
 }
 
-template <class Profile>
+template <class Profile, class Real = typename Profile::value_type>
 void expect_edges_agree(const Profile& p, const char* name) {
   const auto window = terminal_window(p);
-  for (const double gamma : {window.lower, window.upper, (window.lower + window.upper) / 2})
+  for (const Real gamma : {window.lower, window.upper, Real((window.lower + window.upper) / 2)})
     expect_starts_agree(p, gamma, name);
 }
 
@@ -365,6 +369,38 @@ TEST(TerminalMotion, RegressionStartsAgreeWithTheWholeFlowAtWindowEdges) {
   expect_edges_agree(hertz<>(), "hertz");
   expect_edges_agree(boussinesq<>(), "boussinesq");
   expect_edges_agree(annulus<>(0.5), "annulus 0.5");
+}
+
+// issue 28 - in float, within the rounding of a window's edge, the march
+// and the walk find no sign change of the flow and the ends' limits g(0),
+// g(∞) round to a value of the wrong sign or 0: terminal_motion(profile, γ)
+// threw "No zero of the ratio flow found" for Hertz at γ = 1/5 and 1/2, the
+// ring at 1/2 and 2, the disk at 2/3 and Boussinesq at 1.  Where the flow has
+// no sign change at all it now reports the end it runs to, and every start
+// agrees with it, at each edge and one float step to either side.
+template <class Profile>
+std::vector<float> float_steps_around_edges(const Profile& p) {
+  const auto window = terminal_window(p);
+  std::vector<float> gammas;
+  for (const float edge : {window.lower, window.upper})
+    gammas.insert(gammas.end(), {std::nextafter(edge, 0.0f), edge, std::nextafter(edge, 10.0f)});
+  return gammas;
+}
+
+template <class Profile>
+void expect_float_edges_answer(const Profile& p, const char* name) {
+  for (const float gamma : float_steps_around_edges(p)) {
+    EXPECT_NO_THROW(terminal_motion(p, gamma)) << name << ", gamma " << gamma;
+    expect_starts_agree(p, gamma, name);
+  }
+}
+
+TEST(TerminalMotion, RegressionFloatAnswersAtEveryWindowEdge) {
+  expect_float_edges_answer(uniform_disk<float>(), "disk");
+  expect_float_edges_answer(annulus<float>(0.5f), "annulus 0.5");
+  expect_float_edges_answer(ring<float>(), "ring");
+  expect_float_edges_answer(hertz<float>(), "hertz");
+  expect_float_edges_answer(boussinesq<float>(), "boussinesq");
 }
 
 }  // namespace

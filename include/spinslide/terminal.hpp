@@ -90,7 +90,8 @@ namespace detail {
 // grown from ε = 1 is refined where the march found that zero alone (as
 // before the march existed, so that these results kept their last bit) or
 // none (a zero where |g| stays below flow_sign's noise level, just inside an
-// edge of the window), else the march's.
+// edge of the window), else the march's; where there is none at all, the end
+// the flow points to.
 template <class Profile, class Real, class Policy>
 terminal_state<Real> only_zero(const Profile& p, Real gamma,
                                const std::vector<flow_bracket<Real>>& zeros, const Policy& pol) {
@@ -100,6 +101,15 @@ terminal_state<Real> only_zero(const Profile& p, Real gamma,
     return {terminal_regime::sliding_and_spinning, flow_zero(p, gamma, lo, hi, pol)};
   if (zeros.size() == 1)
     return {terminal_regime::sliding_and_spinning, refine_zero(p, gamma, zeros.front(), pol)};
+  // No sign change of g anywhere: g keeps the sign it has at ε = 1, and every
+  // start runs to the end it points to.  This is an end that attracts too
+  // weakly for attracting_ends to resolve: γ at an edge of the window, within
+  // the rounding of the moments (float's Hertz at γ = 1/2, its ring at 2).
+  if (zeros.empty())
+    return flow_over_ratio(p, Real(1), gamma) < 0
+               ? terminal_state<Real>{terminal_regime::pure_spinning, Real(0)}
+               : terminal_state<Real>{terminal_regime::pure_sliding,
+                                      std::numeric_limits<Real>::infinity()};
   const Real bad = boost::math::policies::raise_evaluation_error<Real>(
       "spinslide::terminal_motion<%1%>(profile, %1%)",
       "No zero of the ratio flow found for inertia_ratio = %1%.", gamma, pol);

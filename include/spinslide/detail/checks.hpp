@@ -72,7 +72,10 @@ bool satisfies(T x, argument_rule rule) {
     case argument_rule::shrink_radius:
       return x > 0 && x <= 1 && x * x >= min_value<T>();
     case argument_rule::throw_inertia_ratio:
-      return x >= min_value<T>() && x <= max_value<T>() * epsilon<T>();
+      // The integration to the stop runs in double (detail/stop_flow.hpp): a
+      // type wider than double keeps double's range.
+      return x >= min_value<T>() && x <= max_value<T>() * epsilon<T>() &&
+             x >= T(min_value<double>()) && x <= T(max_value<double>() * epsilon<double>());
     case argument_rule::contact_half_angle:
       return x > 0 && x <= boost::math::constants::pi<T>();
     case argument_rule::normal_load:
@@ -101,9 +104,9 @@ inline const char* requirement(argument_rule rule) {
              "radius a^2<r^2> of the shrunk profile underflows";
     case argument_rule::throw_inertia_ratio:
       // Why the throws narrow γ's domain (found by fuzz_stop_time).
-      return "in [min_value, max_value*epsilon] (2.2e-308 to 4.0e292 for double): above it the "
-             "rates gamma*F/T and gamma/T of the integration to the stop overflow, below it gamma "
-             "has too few digits";
+      return "in [min_value, max_value*epsilon] of its type, and of double for a wider type "
+             "(2.2e-308 to 4.0e292 for double and long double): above it the rates gamma*F/T and "
+             "gamma/T of the integration to the stop overflow, below it gamma has too few digits";
     case argument_rule::contact_half_angle:
       return "in (0, pi]";
     case argument_rule::normal_load:

@@ -137,6 +137,14 @@ class panel_builder {
         g[j] = f.g;
       }
       const values dq = r.integrals_to_nodes(pn.dq);
+      // An iterate that left the numbers (the flow blows up within the
+      // panel: q → −∞ at a finite u, as the spin dies in a pure slide) ends
+      // the iteration unsettled, on the last finite iterate: the panel is
+      // then too wide, and the controller shrinks it.
+      if (!all_finite(dq)) {
+        change = inf;
+        break;
+      }
       change = 0;
       for (std::size_t j = 0; j < n_nodes; ++j) {
         const double qn = here_.q + dq[j];
@@ -146,13 +154,17 @@ class panel_builder {
     }
     integrate(pn, u_rel, g, q);
     pn.q_end = here_.q + r.integral(pn.dq);
-    if (!(change <= settled)) pn.error = inf;
+    if (!(change <= settled) || !std::isfinite(pn.q_end)) pn.error = inf;
     return pn;
   }
 
  private:
   static constexpr std::size_t n_nodes = stop_rule::size;
   static constexpr double inf = std::numeric_limits<double>::infinity();
+
+  static bool all_finite(const values& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+  }
 
   // q and u at the nodes of a panel of width h in u, to start the collocation
   // from: exact for a linear flow towards the zero q∞ (q − q∞ ∝ e^{−λu}),
@@ -189,15 +201,19 @@ class panel_builder {
     const double rest_lead = rest_t * std::exp(-at_.u) / 2;
     auto sum_error = [&](const values& f, double total) {
       const double c0 = std::fabs(r.coefficient(0, f));
+      if (std::isnan(c0)) return c0;
       if (!(c0 > 0)) return 0.0;
       const double rel = r.tail(f) / c0;
       return rel * rel * 2 * c0 / total;
     };
+    // The largest of the estimates; a NaN one (an integrand that left the
+    // numbers) makes the whole NaN, which is taken as ∞.
+    auto worst = [](double a, double b) { return b > a || std::isnan(b) ? b : a; };
     double err = 2 * r.tail(pn.du) * rest_t / (at_.time + rest_t);
-    err = (std::max)(err, sum_error(pn.d_time, at_.time + rest_t));
-    err = (std::max)(err, sum_error(pn.d_lead, at_.lead_travel + rest_lead));
+    err = worst(err, sum_error(pn.d_time, at_.time + rest_t));
+    err = worst(err, sum_error(pn.d_lead, at_.lead_travel + rest_lead));
     const double rest_other = leg_.rest_at_rate(here_, at_.u);
-    err = (std::max)(err, sum_error(pn.d_other, at_.other_travel + rest_other));
+    err = worst(err, sum_error(pn.d_other, at_.other_travel + rest_other));
     return std::isnan(err) ? std::numeric_limits<double>::infinity() : err;
   }
 
