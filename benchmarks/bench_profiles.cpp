@@ -64,7 +64,7 @@ struct thin_annulus : spinslide::annulus<> {
 
 // p ∝ √(1 − r²) by the ring quadrature.
 auto hertz_by_quadrature() {
-  return spinslide::make_radial_profile<double>(
+  return spinslide::radial_profile(
       [](double r, double one_minus_r) { return std::sqrt(one_minus_r * (1 + r)); });
 }
 void quadrature_hertz(benchmark::State& state) { pairs(state, hertz_by_quadrature()); }

@@ -42,9 +42,9 @@ void tabulate(const char* name, const P& p) {
 
 int main() {
   using namespace spinslide;
-  const auto two_tier = make_weighted_sum<double>(
-      {0.6, 0.4}, scaled<uniform_disk<>>(uniform_disk<>(), 0.5), annulus<>(0.5));
-  const auto parabolic = make_radial_profile<double>([](double r) { return (1 - r) * (1 + r); });
+  const auto two_tier =
+      weighted_sum({0.6, 0.4}, scaled<uniform_disk<>>(uniform_disk<>(), 0.5), annulus<>(0.5));
+  const auto parabolic = radial_profile([](double r) { return (1 - r) * (1 + r); });
 
   std::printf(
       "Profiles: moments, F / T at eps = 0.1, 0.653, 1, 3, and the limit curve T at F = 0.5\n\n");

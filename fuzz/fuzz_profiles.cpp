@@ -168,8 +168,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const double b = in.unit<double>();
       describe("b", b);
       build(valid_if(ok && in_unit(b)), "weighted_sum", in, [&] {
-        return make_weighted_sum<double>(w, uniform_disk<double>(), annulus<double>(b),
-                                         ring<double>());
+        return weighted_sum(w, uniform_disk<double>(), annulus<double>(b), ring<double>());
       });
       break;
     }

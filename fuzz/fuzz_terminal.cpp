@@ -8,7 +8,7 @@
 // ratio_flow a finite ε ≥ 0.  The two-argument terminal_motion reports a
 // domain error also where both ε → 0 and ε → ∞ attract (the outcome then
 // depends on the start), and wherever the flow has several attractors (ends
-// or attracting zeros of terminal_ratios, whose zeros are checked too).
+// or attracting zeros of ratio_flow_zeros, whose zeros are checked too).
 // Then: pure sliding ends at ε = +∞, pure spinning at 0, and sliding and
 // spinning at a finite ε₀ > 0 where the flow f(ε₀) = ε₀ − γ𝓕/𝓣 vanishes
 // (|f| ≤ 1e-6 of its larger term); ratio_flow is finite.
@@ -50,21 +50,21 @@ void check_state(const Profile& p, double gamma, const spinslide::terminal_state
   }
 }
 
-// terminal_ratios: ascending, each a zero of f, attracting and repelling in turn.
+// ratio_flow_zeros: ascending, each a zero of f, attracting and repelling in turn.
 template <class Profile>
 void check_zeros(const Profile& p, double gamma,
                  const std::vector<spinslide::ratio_flow_zero<double>>& zeros) {
   for (std::size_t i = 0; i < zeros.size(); ++i) {
     const auto& z = zeros[i];
-    check(z.ratio > 0 && std::isfinite(z.ratio), "terminal_ratios", "a zero not finite and > 0");
+    check(z.ratio > 0 && std::isfinite(z.ratio), "ratio_flow_zeros", "a zero not finite and > 0");
     if (i == 0) continue;
-    check(zeros[i - 1].ratio < z.ratio, "terminal_ratios", "zeros not ascending");
-    check(zeros[i - 1].attracting != z.attracting, "terminal_ratios",
+    check(zeros[i - 1].ratio < z.ratio, "ratio_flow_zeros", "zeros not ascending");
+    check(zeros[i - 1].attracting != z.attracting, "ratio_flow_zeros",
           "two attracting or two repelling zeros in a row");
   }
   for (const auto& z : zeros)
     check_state(p, gamma, {spinslide::terminal_regime::sliding_and_spinning, z.ratio},
-                "terminal_ratios");
+                "ratio_flow_zeros");
 }
 
 }  // namespace
@@ -82,7 +82,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     validity v2 = valid_if(gamma_ok);
     if (gamma_ok) {
       const auto ends = spinslide::detail::attracting_ends(p, gamma);
-      const auto zeros = spinslide::terminal_ratios(p, gamma);
+      const auto zeros = spinslide::ratio_flow_zeros(p, gamma);
       check_zeros(p, gamma, zeros);
       const auto attractors =
           std::count_if(zeros.begin(), zeros.end(), [](const auto& z) { return z.attracting; }) +

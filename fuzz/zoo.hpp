@@ -67,9 +67,9 @@ void with_profile(fuzz_input& in, Visit visit, bool models = true) {
       describe("scaled_a", a);
       describe("w0", w[0]);
       describe("w1", w[1]);
-      visit(make_weighted_sum<double>(w, scaled<uniform_disk<double>>(uniform_disk<double>(), a),
-                                      ring<double>()),
-            "weighted_sum(scaled disk, ring)", true);
+      visit(
+          weighted_sum(w, scaled<uniform_disk<double>>(uniform_disk<double>(), a), ring<double>()),
+          "weighted_sum(scaled disk, ring)", true);
       break;
     }
     case 6: {

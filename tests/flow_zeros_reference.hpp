@@ -29,13 +29,12 @@ using namespace spinslide;
 template <class F>
 void with_load(const std::string& name, F f) {
   if (name == "two_rings")
-    f(make_weighted_sum<double>({0.1, 0.9}, scaled<ring<>>(ring<>(), 0.1), ring<>()));
+    f(weighted_sum({0.1, 0.9}, scaled<ring<>>(ring<>(), 0.1), ring<>()));
   else if (name == "three_rings")
-    f(make_weighted_sum<double>({0.01, 0.09, 0.9}, scaled<ring<>>(ring<>(), 0.01),
-                                scaled<ring<>>(ring<>(), 0.1), ring<>()));
+    f(weighted_sum({0.01, 0.09, 0.9}, scaled<ring<>>(ring<>(), 0.01), scaled<ring<>>(ring<>(), 0.1),
+                   ring<>()));
   else if (name == "disk_and_ring")
-    f(make_weighted_sum<double>({0.1, 0.9}, scaled<uniform_disk<>>(uniform_disk<>(), 0.15),
-                                ring<>()));
+    f(weighted_sum({0.1, 0.9}, scaled<uniform_disk<>>(uniform_disk<>(), 0.15), ring<>()));
   else
     FAIL() << "unknown load " << name;
 }

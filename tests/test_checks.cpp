@@ -104,12 +104,12 @@ void constructors_throw() {
   expect_domain_error([] { scaled<disk>(disk(), 0.0); }, {"scaled<double>", "radius = 0"});
   expect_domain_error(
       [] {
-        make_weighted_sum<double>({-1.0, 1.0}, disk(), disk());
+        weighted_sum({-1.0, 1.0}, disk(), disk());
       },
       {"weighted_sum<double>", "a weight = -1"});
   expect_domain_error(
       [] {
-        make_weighted_sum<double>({0.0, 0.0}, disk(), disk());
+        weighted_sum({0.0, 0.0}, disk(), disk());
       },
       {"weighted_sum<double>", "the largest weight = 0"});
   expect_domain_error([] { radial_profile<double, double (*)(double), Policy>(nullptr, 1.0); },
@@ -174,10 +174,18 @@ TEST(Checks, FunctionsNameThemselvesAndTheArgument) {
                       {"spinslide::stop_time<double>(double, double)", "omega0 = -1"});
   expect_domain_error([] { hertz<>().force(-2.0); },
                       {"spinslide::hertz<double>::force(double)", "eps = -2"});
-  expect_domain_error([] { simulate_throw_si(ring<>(), 0.06, 0.2, 9.81, 0.5, 1.0, nan); },
-                      {"simulate_throw_si<double>", "omega0 = nan"});
-  expect_domain_error([] { simulate_throw_si(ring<>(), 0.06, -0.25, 9.81, 0.5, 1.0, 1.0); },
-                      {"simulate_throw_si<double>", "friction_coefficient = -0.25"});
+  expect_domain_error(
+      [] {
+        simulate_throw_si(ring<>(), disk_radius{0.06}, friction_coefficient{0.2}, gravity{9.81},
+                          0.5, initial_speed{1.0}, initial_spin{nan});
+      },
+      {"simulate_throw_si<double>", "omega0 = nan"});
+  expect_domain_error(
+      [] {
+        simulate_throw_si(ring<>(), disk_radius{0.06}, friction_coefficient{-0.25}, gravity{9.81},
+                          0.5, initial_speed{1.0}, initial_spin{1.0});
+      },
+      {"simulate_throw_si<double>", "friction_coefficient = -0.25"});
   expect_domain_error(
       [] {
         trajectory(ring<>(), 0.5, 1.0, 1.0, std::vector<double>{1.0, 0.5});
@@ -231,7 +239,8 @@ void cylinder_functions_return_nan() {
 template <class Policy>
 void throw_functions_return_nan() {
   using disk = uniform_disk<double, Policy>;
-  const auto r = simulate_throw_si(disk(), 0.06, 0.2, -9.81, 0.5, 1.0, 1.0);
+  const auto r = simulate_throw_si(disk(), disk_radius{0.06}, friction_coefficient{0.2},
+                                   gravity{-9.81}, 0.5, initial_speed{1.0}, initial_spin{1.0});
   EXPECT_TRUE(std::isnan(r.time) && std::isnan(r.distance) && std::isnan(r.angle));
   const tabulated_throw<disk> table(disk(), 0.5);
   EXPECT_TRUE(std::isnan(table.distance(-1.0, 1.0)));

@@ -401,7 +401,7 @@ TEST(ContactLaw, RegressionForceOfAProfileRoundedAboveOne) {
   const double b = 0.635197164334527664131, scale = 0.937500000000852762305;
   const double w1 = 0.173717571710168772192, w2 = 541249.376203841762617;
   const annulus<double> ann(b);
-  const auto sum = make_weighted_sum<double>(
+  const auto sum = weighted_sum(
       {w1, w2}, scaled<uniform_disk<double>>(uniform_disk<double>(), scale), ring<double>());
   const vec3 n{0, 0, 1};
   const double a_ann = 6.93531866257113469774e-88;

@@ -14,6 +14,7 @@
 #include <spinslide/spinslide.hpp>
 
 #include <array>
+#include <cstddef>
 #include <type_traits>
 
 #if defined(__GNUC__)
@@ -84,3 +85,61 @@ TEST(DeprecatedNames, SpringFrictionIsTheSpringLawsResult) {
 static_assert(std::is_same<engines::pair_friction, pair_friction>::value, "");
 static_assert(std::is_same<engines::hertz_radius, hertz_radius>::value, "");
 static_assert(std::is_same<engines::patch_profile, patch_profile>::value, "");
+
+namespace {
+
+// Issue 28: terminal_ratios(profile, γ), the flow's zeros, is now
+// ratio_flow_zeros (it read as a plural of terminal_ratio(), the paper's ε₀).
+TEST(DeprecatedNames, TerminalRatiosIsRatioFlowZeros) {
+  const spinslide::hertz<> p;
+  for (const double gamma : {0.3, 0.45}) {
+    const auto old_zeros = spinslide::terminal_ratios(p, gamma);
+    const auto new_zeros = spinslide::ratio_flow_zeros(p, gamma);
+    ASSERT_EQ(old_zeros.size(), new_zeros.size());
+    ASSERT_FALSE(new_zeros.empty());
+    for (std::size_t i = 0; i < new_zeros.size(); ++i) {
+      EXPECT_EQ(old_zeros[i].ratio, new_zeros[i].ratio);
+      EXPECT_EQ(old_zeros[i].attracting, new_zeros[i].attracting);
+    }
+  }
+}
+
+// Issue 28: simulate_throw_si's six numbers in a row are named inputs now
+// (throw_inputs.hpp); the old overload gives the same numbers.
+TEST(DeprecatedNames, SimulateThrowSiWithSixNumbersIsTheNamedOverload) {
+  using namespace spinslide;
+  const annulus<> cd(0.125);
+  const auto old_throw = simulate_throw_si(cd, 0.06, 0.2, 9.81, 0.5078125, 0.8, 20.0);
+  const auto new_throw =
+      simulate_throw_si(cd, disk_radius{0.06}, friction_coefficient{0.2}, gravity{9.81}, 0.5078125,
+                        initial_speed{0.8}, initial_spin{20.0});
+  EXPECT_EQ(old_throw.time, new_throw.time);
+  EXPECT_EQ(old_throw.distance, new_throw.distance);
+  EXPECT_EQ(old_throw.angle, new_throw.angle);
+  EXPECT_EQ(old_throw.terminal.ratio, new_throw.terminal.ratio);
+}
+
+}  // namespace
+
+namespace {
+
+// Issue 28: profiles are built one way, by class template argument
+// deduction; make_weighted_sum and make_radial_profile build the same.
+TEST(DeprecatedNames, MakeHelpersBuildWhatDeductionBuilds) {
+  using namespace spinslide;
+  const auto old_sum = make_weighted_sum<double>({0.6, 0.4}, uniform_disk<>(), ring<>());
+  const auto new_sum = weighted_sum({0.6, 0.4}, uniform_disk<>(), ring<>());
+  static_assert(std::is_same<decltype(old_sum), decltype(new_sum)>::value);
+  auto p = [](double r) { return 1 - r * r; };
+  const auto old_radial = make_radial_profile<double>(p, 0.125);
+  const auto new_radial = radial_profile(p, 0.125);
+  static_assert(std::is_same<decltype(old_radial), decltype(new_radial)>::value);
+  static_assert(std::is_same<decltype(radial_profile(p, 0))::value_type, double>::value);
+  static_assert(std::is_same<decltype(radial_profile(p, 0.5f))::value_type, float>::value);
+  for (const double eps : {0.1, 1.0, 7.0}) {
+    EXPECT_EQ(old_sum.force(eps), new_sum.force(eps));
+    EXPECT_EQ(old_radial.torque(eps), new_radial.torque(eps));
+  }
+}
+
+}  // namespace

@@ -209,7 +209,8 @@ TEST(OdeintSystem, SiUnitsMatchTheDimensionlessOnes) {
   const annulus<> cd(0.125);
   const double R = 0.06, mu = 0.2, g = 9.81, gamma = (1 + 0.125 * 0.125) / 2;
   const double v0 = 0.8, w0 = 20.0;
-  const auto si = simulate_throw_si(cd, R, mu, g, gamma, v0, w0);
+  const auto si = simulate_throw_si(cd, disk_radius{R}, friction_coefficient{mu}, gravity{g}, gamma,
+                                    initial_speed{v0}, initial_spin{w0});
   const double vs = mu * std::sqrt(g * R), ws = mu * std::sqrt(g / R), ts = std::sqrt(R / g);
   const auto d = simulate_throw(cd, gamma, v0 / vs, w0 / ws);
   EXPECT_LE(relative_difference(si.time, d.time * ts), 1e-15);
@@ -262,10 +263,18 @@ TEST(Dynamics, BadInputIsADomainError) {
   EXPECT_THROW(stop_time(1.0, nan), std::domain_error);
   EXPECT_THROW(stop_time(u, 0.0, 1.0, 1.0), std::domain_error);
   EXPECT_THROW(stop_time(u, nan, 1.0, 1.0), std::domain_error);
-  EXPECT_THROW(simulate_throw_si(u, 0.0, 0.2, 9.81, 0.5, 1.0, 1.0), std::domain_error);
-  EXPECT_THROW(simulate_throw_si(u, 0.06, -0.2, 9.81, 0.5, 1.0, 1.0), std::domain_error);
-  EXPECT_THROW(simulate_throw_si(u, 0.06, 0.2, nan, 0.5, 1.0, 1.0), std::domain_error);
-  EXPECT_THROW(simulate_throw_si(u, 0.06, 0.2, 9.81, -0.5, 1.0, 1.0), std::domain_error);
+  EXPECT_THROW(simulate_throw_si(u, disk_radius{0.0}, friction_coefficient{0.2}, gravity{9.81}, 0.5,
+                                 initial_speed{1.0}, initial_spin{1.0}),
+               std::domain_error);
+  EXPECT_THROW(simulate_throw_si(u, disk_radius{0.06}, friction_coefficient{-0.2}, gravity{9.81},
+                                 0.5, initial_speed{1.0}, initial_spin{1.0}),
+               std::domain_error);
+  EXPECT_THROW(simulate_throw_si(u, disk_radius{0.06}, friction_coefficient{0.2}, gravity{nan}, 0.5,
+                                 initial_speed{1.0}, initial_spin{1.0}),
+               std::domain_error);
+  EXPECT_THROW(simulate_throw_si(u, disk_radius{0.06}, friction_coefficient{0.2}, gravity{9.81},
+                                 -0.5, initial_speed{1.0}, initial_spin{1.0}),
+               std::domain_error);
   EXPECT_THROW((dimensionless_motion<uniform_disk<>>(u, 0.0)), std::domain_error);
   EXPECT_THROW((si_motion<uniform_disk<>>(u, 0.06, 0.2, 0.0, 0.5)), std::domain_error);
   EXPECT_THROW(trajectory(u, 0.5, 1.0, 1.0, std::vector<double>{0.5, 0.1}), std::domain_error);

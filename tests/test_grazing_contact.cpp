@@ -435,11 +435,11 @@ TEST(GrazingContact, RegressionThinSetSpinningWithoutSlideAndAnOverflowingBound)
 // impulse added energy.  The threshold now takes the profile's own width
 // 2/⟨1/r⟩ into account.
 TEST(GrazingContact, RegressionThinPatchOfAConcentratedLoad) {
-  const auto profile = spinslide::make_weighted_sum<double>(
-      {4387.06194918419896567, 341.301477989606269148},
-      spinslide::scaled<spinslide::uniform_disk<>>(spinslide::uniform_disk<>(),
-                                                   9.99999999999999954748e-07),
-      spinslide::ring<>());
+  const auto profile =
+      spinslide::weighted_sum({4387.06194918419896567, 341.301477989606269148},
+                              spinslide::scaled<spinslide::uniform_disk<>>(
+                                  spinslide::uniform_disk<>(), 9.99999999999999954748e-07),
+                              spinslide::ring<>());
   const auto w =
       metric_of({17.6071742022299098096, -31.4294502114571265849, 9.30044809071360312203,
                  -31.4294502114571265849, 62.342698174256646837, -3.76222331749995753114,

@@ -310,10 +310,10 @@ TEST(ImpulseFriction, RegressionZigZagAcrossTheConeOfAConcentratedLoad) {
       {{3057.44142274864680076, 304.663581637285290071, -453.833521726022468101},
        {304.663581637285290071, 40.3061166258300431764, -44.3573233699522972984},
        {-453.833521726022468101, -44.3573233699522972984, 67.5161392564017859286}}});
-  const auto p = make_weighted_sum<double>(
-      {0.000480710649395849239085, 0.000481591914550557210345},
-      scaled<uniform_disk<double>>(uniform_disk<double>(), 7.05531999212194534159e-06),
-      ring<double>());
+  const auto p =
+      weighted_sum({0.000480710649395849239085, 0.000481591914550557210345},
+                   scaled<uniform_disk<double>>(uniform_disk<double>(), 7.05531999212194534159e-06),
+                   ring<double>());
   const impulse_contact<double> c{patch_radius<double>{0.486274509803921561879},
                                   normal_impulse<double>{0.478828220741421561879},
                                   friction_coefficient<double>{0.486274509803921561879}};

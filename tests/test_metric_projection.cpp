@@ -301,10 +301,10 @@ TEST(MetricProjection, RegressionStallWithANearlySingularMetric) {
 wrench_projection<double> expect_nearest_for_a_concentrated_load(double load, double ring_weight,
                                                                  const matrix& m,
                                                                  const tangent_wrench<double>& z) {
-  const auto p = make_weighted_sum<double>(
-      {load, ring_weight},
-      scaled<uniform_disk<double>>(uniform_disk<double>(), 9.99999999999999954748e-07),
-      ring<double>());
+  const auto p =
+      weighted_sum({load, ring_weight},
+                   scaled<uniform_disk<double>>(uniform_disk<double>(), 9.99999999999999954748e-07),
+                   ring<double>());
   const auto r = project_to_limit_set(p, z, planar_metric<double>(m));
   expect_optimal(p, m, z, r);
   EXPECT_GT(r.point.force_x * z.force_x + r.point.force_y * z.force_y, 0) << "the force along z's";

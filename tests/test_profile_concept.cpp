@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 namespace {
@@ -178,11 +179,44 @@ TEST(ProfileConcept, ArchetypeThroughTheDynamicsTheLawAndTheTables) {
   EXPECT_NEAR(table.force(1.0), 0.5, 1e-14);
   const scaled<archetype> half(p, 0.5);
   EXPECT_NEAR(half.force(1.0), 2.0 / 3, 1e-15);  // 𝓕(ε/a) at ε/a = 2
-  const auto sum = make_weighted_sum<double>({1.0, 1.0}, p, p);
+  const auto sum = weighted_sum({1.0, 1.0}, p, p);
   EXPECT_NEAR(sum.torque(1.0), 0.5, 1e-15);
   EXPECT_EQ(pade_approximation<>::matching(p).mean_square_radius(), 2.0);
   const tabulated_throw<archetype> throws(p, 0.5);
   EXPECT_EQ(throws.stop_time(1.5, 0.0), 1.5);  // pure sliding: exact
 }
+
+// Issue 28: one name per thing (docs/architecture.md, rule 4): every public
+// class template over a floating type names it value_type, the results and
+// the named inputs as the profiles, systems, laws and tables do.
+template <template <class> class C>
+constexpr bool names_float() {
+  return std::is_same<typename C<float>::value_type, float>::value &&
+         std::is_same<typename C<long double>::value_type, long double>::value;
+}
+template <template <class, class> class C>
+constexpr bool names_float_with_vector() {
+  return std::is_same<typename C<std::array<float, 2>, float>::value_type, float>::value;
+}
+static_assert(names_float<force_torque_result>() && names_float<motion_sample>() &&
+              names_float<stop_result>() && names_float<terminal_state>() &&
+              names_float<inertia_window>() && names_float<ratio_flow_zero>() &&
+              names_float<throw_start>() && names_float<tabulated_stop>() &&
+              names_float<si_units>() && names_float<tangent_wrench>() &&
+              names_float<curve_point>() && names_float<limit_projection>() &&
+              names_float<wrench_projection>() && names_float<cylinder_friction>() &&
+              names_float<segment_friction>() && names_float<tilt_integrals>());
+static_assert(names_float<patch_radius>() && names_float<normal_impulse>() &&
+              names_float<normal_force>() && names_float<tangential_stiffness>() &&
+              names_float<twisting_stiffness>() && names_float<velocity_scale>() &&
+              names_float<friction_coefficient>() && names_float<impulse_contact>() &&
+              names_float<force_contact>() && names_float<spring_stiffness>() &&
+              names_float<disk_radius>() && names_float<gravity>() &&
+              names_float<initial_speed>() && names_float<initial_spin>());
+static_assert(names_float_with_vector<planar_friction>() &&
+              names_float_with_vector<friction_result>() &&
+              names_float_with_vector<spring_history>() &&
+              names_float_with_vector<spring_trial>() &&
+              names_float_with_vector<capped_friction>());
 
 }  // namespace

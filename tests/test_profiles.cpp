@@ -52,11 +52,10 @@ const std::map<std::string, std::vector<ref_point>>& reference() {
 
 auto two_tier() {
   // 60% of the load on r < 1/2, 40% on 1/2 < r < 1, uniform within each.
-  return make_weighted_sum<double>({0.6, 0.4}, scaled<uniform_disk<>>(uniform_disk<>(), 0.5),
-                                   annulus<>(0.5));
+  return weighted_sum({0.6, 0.4}, scaled<uniform_disk<>>(uniform_disk<>(), 0.5), annulus<>(0.5));
 }
 auto parabolic() {
-  return make_radial_profile<double>([](double r) { return (1 - r) * (1 + r); });
+  return radial_profile([](double r) { return (1 - r) * (1 + r); });
 }
 
 // Largest relative error of a profile over the reference rows in [1e-6, 1e6].
@@ -99,10 +98,9 @@ TEST(ProfileReference, WeightedSumAndCustomProfileWithin1e13) {
   EXPECT_PROFILE_MATCHES_REFERENCE(two_tier(), "two_tier", 1e-13);
   EXPECT_PROFILE_MATCHES_REFERENCE(parabolic(), "parabolic", 1e-13);
   // The uniform disk through the generic ring quadrature, not the closed forms.
-  EXPECT_PROFILE_MATCHES_REFERENCE(make_radial_profile<double>([](double) { return 1.0; }),
-                                   "uniform", 1e-13);
+  EXPECT_PROFILE_MATCHES_REFERENCE(radial_profile([](double) { return 1.0; }), "uniform", 1e-13);
   // The thin-annulus code path (ring quadrature) on the CD's annulus.
-  auto cd_by_quadrature = make_radial_profile<double>([](double) { return 1.0; }, 0.125);
+  auto cd_by_quadrature = radial_profile([](double) { return 1.0; }, 0.125);
   EXPECT_PROFILE_MATCHES_REFERENCE(cd_by_quadrature, "annulus_0.125", 1e-13);
 }
 
@@ -146,12 +144,12 @@ TEST(ProfileMoments, ClosedFormsAndQuadratureAgree) {
   // The ring is the load δ(r − 1): every moment is 1.
   expect_moments(ring<>(), {1, 1, 1}, "ring");
   // radial_profile computes its moments by its own quadrature: the same numbers.
-  auto h = make_radial_profile<double>([](double r) { return std::sqrt((1 - r) * (1 + r)); });
+  auto h = radial_profile([](double r) { return std::sqrt((1 - r) * (1 + r)); });
   // The rim singularity needs 1 − r exactly: the two-argument form.
-  auto bq = make_radial_profile<double>(
+  auto bq = radial_profile(
       [](double r, double one_minus_r) { return 1 / std::sqrt(one_minus_r * (1 + r)); });
   // With p(r) alone the lost sliver 1 − r < 1e-16 costs ~1e-8 (documented).
-  auto bq1 = make_radial_profile<double>([](double r) { return 1 / std::sqrt((1 - r) * (1 + r)); });
+  auto bq1 = radial_profile([](double r) { return 1 / std::sqrt((1 - r) * (1 + r)); });
   EXPECT_LE(relative_difference(bq1.mean_radius(), pi / 4), 1e-7);
   expect_moments(h, spinslide_test::hertz_moments(), "radial hertz", 1e-14);
   expect_moments(bq, spinslide_test::boussinesq_moments(), "radial boussinesq", 1e-12);
@@ -240,7 +238,7 @@ TEST(ProfileIdentities, RingForceIsTorqueAtReciprocal) {
 // Boussinesq's pressure by the ring quadrature (a radial_profile; boussinesq<>
 // itself evaluates these closed forms).
 auto boussinesq_by_quadrature() {
-  return make_radial_profile<double>(
+  return radial_profile(
       [](double r, double one_minus_r) { return 1 / std::sqrt(one_minus_r * (1 + r)); });
 }
 
@@ -340,11 +338,9 @@ TEST(SingularRatios, AreTheEdgesOfTheSupport) {
   expect_singular_exactly_at(annulus<>(0.6), {0.6, 1.0});
   expect_singular_exactly_at(scaled<uniform_disk<>>(uniform_disk<>(), 0.5), {0.5});
   expect_singular_exactly_at(
-      make_weighted_sum<double>({0.75, 0.25}, ring<>(),
-                                scaled<uniform_disk<>>(uniform_disk<>(), 0.125)),
+      weighted_sum({0.75, 0.25}, ring<>(), scaled<uniform_disk<>>(uniform_disk<>(), 0.125)),
       {0.125, 1.0});
-  expect_singular_exactly_at(make_radial_profile<double>([](double) { return 1.0; }, 0.3),
-                             {0.3, 1.0});
+  expect_singular_exactly_at(radial_profile([](double) { return 1.0; }, 0.3), {0.3, 1.0});
 }
 
 TEST(SingularRatios, ATableKeepsItsSources) {
@@ -365,11 +361,11 @@ TEST(ProfileErrors, BadInputIsADomainError) {
   EXPECT_THROW(ring<>().torque(NAN), std::domain_error);
   EXPECT_THROW((scaled<uniform_disk<>>(uniform_disk<>(), 0.0)), std::domain_error);
   EXPECT_THROW((scaled<uniform_disk<>>(uniform_disk<>(), 1.5)), std::domain_error);
-  EXPECT_THROW(make_weighted_sum<double>({-1.0, 2.0}, ring<>(), hertz<>()), std::domain_error);
-  EXPECT_THROW(make_weighted_sum<double>({0.0, 0.0}, ring<>(), hertz<>()), std::domain_error);
-  EXPECT_THROW(make_radial_profile<double>([](double r) { return r - 0.5; }), std::domain_error);
-  EXPECT_THROW(make_radial_profile<double>([](double) { return 0.0; }), std::domain_error);
-  EXPECT_THROW(make_radial_profile<double>([](double) { return 1.0; }, 1.0), std::domain_error);
+  EXPECT_THROW(weighted_sum({-1.0, 2.0}, ring<>(), hertz<>()), std::domain_error);
+  EXPECT_THROW(weighted_sum({0.0, 0.0}, ring<>(), hertz<>()), std::domain_error);
+  EXPECT_THROW(radial_profile([](double r) { return r - 0.5; }), std::domain_error);
+  EXPECT_THROW(radial_profile([](double) { return 0.0; }), std::domain_error);
+  EXPECT_THROW(radial_profile([](double) { return 1.0; }, 1.0), std::domain_error);
   try {
     annulus<>(2.0);
     ADD_FAILURE();
@@ -408,7 +404,7 @@ TEST(RingKernel, RegressionSubnormalDistanceToTheSplitGivesTheLimit) {
 // the same profile: the uniform disk's moments (∫₀¹ 2r^(k+1) dr) and 𝓕, 𝓣.
 TEST(RadialProfile, RegressionPressureOfAnySizeIsTheSameProfile) {
   for (const double c : {max_d, 1.0, 1e-300}) {
-    const auto p = make_radial_profile<double>([c](double) { return c; });
+    const auto p = radial_profile([c](double) { return c; });
     EXPECT_NEAR(p.mean_radius(), 2.0 / 3, 1e-14) << c;
     EXPECT_NEAR(p.mean_inverse_radius(), 2.0, 1e-13) << c;
     EXPECT_NEAR(p.mean_square_radius(), 0.5, 1e-14) << c;
@@ -416,7 +412,7 @@ TEST(RadialProfile, RegressionPressureOfAnySizeIsTheSameProfile) {
     EXPECT_NEAR(p.torque(0.7), torque(0.7), 1e-13) << c;
   }
   // A total that overflows even so is the documented domain error.
-  EXPECT_THROW(make_radial_profile<double>([](double r) { return r < 0.5 ? max_d : 1e-300; }),
+  EXPECT_THROW(radial_profile([](double r) { return r < 0.5 ? max_d : 1e-300; }),
                std::domain_error);
 }
 
@@ -434,7 +430,7 @@ TEST(RadialProfile, RegressionSubnormalPressureIsRefused) {
   };
   for (const double c : {5e-324, 1e-320, 1e-310}) {
     try {
-      make_radial_profile<double>(rim(c), b);
+      radial_profile(rim(c), b);
       ADD_FAILURE() << c;
     } catch (const std::domain_error& e) {
       EXPECT_NE(std::string(e.what()).find("subnormal"), std::string::npos) << e.what();
@@ -446,7 +442,7 @@ TEST(RadialProfile, RegressionSubnormalPressureIsRefused) {
   const double m3 = 2 * (w - std::pow(w, 3) + 3 * std::pow(w, 5) / 5 - std::pow(w, 7) / 7);
   const double m0 = 2 * w;  // ∫ 1/√(1 − r) dr, ⟨1/r⟩'s numerator
   for (const double c : {3e-308, 1.0}) {
-    const auto p = make_radial_profile<double>(rim(c), b);
+    const auto p = radial_profile(rim(c), b);
     EXPECT_NEAR(p.mean_radius(), m2 / m1, 1e-14) << c;
     EXPECT_NEAR(p.mean_square_radius(), m3 / m1, 1e-14) << c;
     EXPECT_NEAR(p.mean_inverse_radius(), m0 / m1, 1e-14) << c;
@@ -459,8 +455,8 @@ TEST(RadialProfile, RegressionSubnormalPressureIsRefused) {
 // the values of r^k at the two ends.
 TEST(RadialProfile, RegressionSupportThinnerThanItsMidpoint) {
   const double inner = std::nextafter(1.0, 0.0);
-  const auto thin = make_radial_profile<double>(
-      [](double, double one_minus_r) { return 1 / std::sqrt(one_minus_r); }, inner);
+  const auto thin =
+      radial_profile([](double, double one_minus_r) { return 1 / std::sqrt(one_minus_r); }, inner);
   EXPECT_NEAR(thin.mean_radius(), 1.0, 1e-15);
   EXPECT_GE(thin.mean_radius(), inner);
   EXPECT_LE(thin.mean_radius(), 1.0);
@@ -474,7 +470,7 @@ TEST(RadialProfile, RegressionSupportThinnerThanItsMidpoint) {
 // dividing by the largest weight first.  Equal weights: the mean of the disk's
 // and the ring's moments (2/3, 2, 1/2 and 1, 1, 1) and of their 𝓕, 𝓣.
 TEST(WeightedSum, RegressionWeightsWhoseSumOverflows) {
-  const auto w = make_weighted_sum<double>({max_d, max_d}, uniform_disk<double>(), ring<double>());
+  const auto w = weighted_sum({max_d, max_d}, uniform_disk<double>(), ring<double>());
   EXPECT_DOUBLE_EQ(w.weights()[0], 0.5);
   EXPECT_DOUBLE_EQ(w.weights()[1], 0.5);
   EXPECT_DOUBLE_EQ(w.mean_radius(), (2.0 / 3 + 1) / 2);
@@ -493,10 +489,10 @@ TEST(WeightedSum, RegressionWeightsWhoseSumOverflows) {
 // levels off.
 TEST(Annulus, RegressionForceRoundedAboveOneAtLargeRatios) {
   const annulus<double> ann(0.635197164334527664131);
-  const auto sum = make_weighted_sum<double>(
-      {0.173717571710168772192, 541249.376203841762617},
-      scaled<uniform_disk<double>>(uniform_disk<double>(), 0.937500000000852762305),
-      ring<double>());
+  const auto sum =
+      weighted_sum({0.173717571710168772192, 541249.376203841762617},
+                   scaled<uniform_disk<double>>(uniform_disk<double>(), 0.937500000000852762305),
+                   ring<double>());
   for (const double f : {ann.force(std::sqrt(2.0) / 6.93531866257113469774e-88),
                          sum.force(3.61069398448143300918e+307 / 6.98211634151446680426e+275)}) {
     EXPECT_LE(f, 1.0);

@@ -137,7 +137,7 @@ TEST(Threads, ConcurrentEqualsSerial) {
   const spinslide::tabulated_profile<> tab{spinslide::hertz<>()};
   // Hertz's pressure by the ring quadrature (hertz<> itself is closed-form).
   const auto quadrature =
-      spinslide::make_radial_profile<double>([](double r) { return std::sqrt((1 - r) * (1 + r)); });
+      spinslide::radial_profile([](double r) { return std::sqrt((1 - r) * (1 + r)); });
   const spinslide::contact_law<spinslide::tabulated_profile<>> law{
       tab, spinslide::velocity_scale<double>{1e-6}};
   auto evaluate = [&](std::size_t i) {

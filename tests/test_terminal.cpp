@@ -172,8 +172,7 @@ TEST(TerminalMotion, FromAnInitialRatio) {
 // Half the load on a tiny central disk and half on the rim: the window is
 // empty (2⟨r⟩/⟨1/r⟩ < ⟨r²⟩/2) and between the two edges both ends attract.
 TEST(TerminalMotion, BistableProfileDependsOnTheInitialRatio) {
-  const auto p = make_weighted_sum<double>(
-      {0.5, 0.5}, scaled<uniform_disk<>>(uniform_disk<>(), 0.01), ring<>());
+  const auto p = weighted_sum({0.5, 0.5}, scaled<uniform_disk<>>(uniform_disk<>(), 0.01), ring<>());
   const auto w = terminal_window(p);
   ASSERT_GT(w.lower, w.upper);
   const double g = std::sqrt(w.lower * w.upper);
@@ -182,12 +181,12 @@ TEST(TerminalMotion, BistableProfileDependsOnTheInitialRatio) {
   EXPECT_EQ(terminal_motion(p, g, 1e6).regime, terminal_regime::pure_sliding);
 }
 
-TEST(TerminalRatios, EveryZeroMatchesTheIndependentScanOfTheRingIntegral) {
+TEST(RatioFlowZeros, EveryZeroMatchesTheIndependentScanOfTheRingIntegral) {
   const auto cases = reference_flow_cases();
   ASSERT_EQ(cases.size(), 10u);
   for (const auto& c : cases) {
     with_load(c.load, [&](const auto& p) {
-      const auto zeros = terminal_ratios(p, c.gamma);
+      const auto zeros = ratio_flow_zeros(p, c.gamma);
       ASSERT_EQ(zeros.size(), c.zeros.size()) << c.load << " " << c.gamma;
       for (std::size_t i = 0; i < zeros.size(); ++i) {
         EXPECT_LE(boost::math::relative_difference(zeros[i].ratio, c.zeros[i].ratio), 1e-12)
@@ -278,26 +277,26 @@ TEST(TerminalMotion, SeveralAttractorsAreADomainError) {
 
 // The zeros of the built-in profiles in their windows: one, attracting, the
 // ε₀ of terminal_motion; outside the windows none (and the paper's ε₀).
-TEST(TerminalRatios, OneAttractingZeroInTheWindowOfEveryBuiltInProfile) {
-  const auto disk = terminal_ratios(uniform_disk<>(), 0.5);
+TEST(RatioFlowZeros, OneAttractingZeroInTheWindowOfEveryBuiltInProfile) {
+  const auto disk = ratio_flow_zeros(uniform_disk<>(), 0.5);
   ASSERT_EQ(disk.size(), 1u);
   EXPECT_TRUE(disk[0].attracting);
   EXPECT_LE(boost::math::epsilon_difference(
                 disk[0].ratio, std::strtod(reference_terminal_ratio().c_str(), nullptr)),
             2);
-  EXPECT_TRUE(terminal_ratios(uniform_disk<>(), 0.2).empty());  // below the window
-  EXPECT_TRUE(terminal_ratios(uniform_disk<>(), 0.7).empty());  // above it
-  const auto b = terminal_ratios(boussinesq<>(), 0.5);
+  EXPECT_TRUE(ratio_flow_zeros(uniform_disk<>(), 0.2).empty());  // below the window
+  EXPECT_TRUE(ratio_flow_zeros(uniform_disk<>(), 0.7).empty());  // above it
+  const auto b = ratio_flow_zeros(boussinesq<>(), 0.5);
   ASSERT_EQ(b.size(), 1u);
   // docs/theory.md §8: ε₀ = 1.  Boussinesq's quadrature is accurate to ~1e-13,
   // and the march's bracket is not terminal_motion's: 1e-12 here.
   EXPECT_NEAR(b[0].ratio, 1.0, 1e-12);
-  EXPECT_TRUE(terminal_ratios(ring<>(), 0.5).empty());  // the lower edge: pure sliding
+  EXPECT_TRUE(ratio_flow_zeros(ring<>(), 0.5).empty());  // the lower edge: pure sliding
 }
 
-TEST(TerminalRatios, BadInputIsADomainError) {
+TEST(RatioFlowZeros, BadInputIsADomainError) {
   for (double g : {0.0, -1.0, double(NAN), double(INFINITY)})
-    EXPECT_THROW(terminal_ratios(uniform_disk<>(), g), std::domain_error) << g;
+    EXPECT_THROW(ratio_flow_zeros(uniform_disk<>(), g), std::domain_error) << g;
 }
 
 TEST(TerminalMotion, BadInputIsADomainError) {

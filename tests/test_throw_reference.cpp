@@ -78,8 +78,8 @@ void with_profile(const std::string& name, Use use) {
   if (name == "boussinesq") return use(boussinesq<Real>());
   if (name == "cd_annulus") return use(annulus<Real>(Real(1) / 8));
   ASSERT_EQ(name, "ring_and_core");
-  use(make_weighted_sum<Real>({Real(0.75), Real(0.25)}, ring<Real>(),
-                              scaled<uniform_disk<Real>>(uniform_disk<Real>(), Real(0.125))));
+  use(weighted_sum({Real(0.75), Real(0.25)}, ring<Real>(),
+                   scaled<uniform_disk<Real>>(uniform_disk<Real>(), Real(0.125))));
 }
 
 // The largest errors over the table and for each (profile, γ).

@@ -115,9 +115,8 @@ int main() {
   profile("boussinesq", boussinesq<>());
   profile("scaled(disk, 0.5)", scaled<uniform_disk<>>(uniform_disk<>(), 0.5));
   profile("weighted_sum",
-          make_weighted_sum<double>({0.6, 0.4}, scaled<uniform_disk<>>(uniform_disk<>(), 0.5),
-                                    annulus<>(0.5)));
-  profile("radial(1-r)", make_radial_profile<double>([](double r) { return 1 - r; }, 0.1));
+          weighted_sum({0.6, 0.4}, scaled<uniform_disk<>>(uniform_disk<>(), 0.5), annulus<>(0.5)));
+  profile("radial(1-r)", radial_profile([](double r) { return 1 - r; }, 0.1));
   profile("uncoupled_caps", uncoupled_caps<>(), false);
   profile("elliptic", elliptic_limit_surface<>());
   profile("pade", pade_approximation<>::matching(hertz<>()));
@@ -134,7 +133,8 @@ int main() {
   throws("boussinesq", boussinesq<>(), 20);
   throws("hertz", hertz<>(), 20);
   put("stop_time(hertz)", stop_time(hertz<>(), 0.4, 1.0, 2.0));
-  const auto si = simulate_throw_si(uniform_disk<>(), 0.06, 0.2, 9.81, 0.5, 1.0, 20.0);
+  const auto si = simulate_throw_si(uniform_disk<>(), disk_radius{0.06}, friction_coefficient{0.2},
+                                    gravity{9.81}, 0.5, initial_speed{1.0}, initial_spin{20.0});
   std::printf("si %a %a %a\n", si.time, si.distance, si.angle);
   for (const auto& m :
        trajectory(uniform_disk<>(), 0.5, 2.0, 1.0, {0.0, 0.1, 0.5, 1.0, 1.5, 100.0}))

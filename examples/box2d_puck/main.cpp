@@ -107,8 +107,9 @@ int main(int argc, char** argv) {
   std::fclose(f);
 
   // The exact stop of puck A from spinslide's own integration, for comparison.
-  const auto exact =
-      spinslide::simulate_throw_si(spinslide::uniform_disk<>(), R, mu, g, gamma, v0, w0);
+  const auto exact = spinslide::simulate_throw_si(
+      spinslide::uniform_disk<>(), spinslide::disk_radius{R}, spinslide::friction_coefficient{mu},
+      spinslide::gravity{g}, gamma, spinslide::initial_speed{v0}, spinslide::initial_spin{w0});
   const double e0 = spinslide::terminal_ratio();
   std::printf(
       "puck: R = %.2f m, m = %.3f kg, gamma = %.3f, mu = %.2f, v0 = %.2f m/s, omega0 = %.1f rad/s "

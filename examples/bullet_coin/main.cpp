@@ -305,8 +305,10 @@ ball_log run_ball(model m) {
 bool run_throw(const throw_case& c, double gamma, int index, FILE* f) {
   const spinslide::si_units<double> u{coin_radius, mu, g};
   const double v0 = c.v0s * u.velocity_scale(), w0 = c.w0s * u.spin_scale();
-  const auto exact_stop =
-      spinslide::simulate_throw_si(spinslide::uniform_disk<>(), coin_radius, mu, g, gamma, v0, w0);
+  const auto exact_stop = spinslide::simulate_throw_si(
+      spinslide::uniform_disk<>(), spinslide::disk_radius{coin_radius},
+      spinslide::friction_coefficient{mu}, spinslide::gravity{g}, gamma,
+      spinslide::initial_speed{v0}, spinslide::initial_spin{w0});
   const double duration = 1.3 * exact_stop.time + 0.02;
   const run_log logs[3] = {run_bullet(model::native, v0, w0, duration),
                            run_bullet(model::plugin, v0, w0, duration),

@@ -60,7 +60,9 @@ inline throws_t simulate(int n_throws, unsigned seed, film_noise noise_sd = trac
     const double mu = true_a + true_b * n;
     const double v0 = speed(rng), w0 = spin(rng), direction = angle(rng), theta0 = angle(rng);
     const spinslide::si_motion<spinslide::annulus<>> units(cd, R, mu, g, gamma_cd);
-    const auto stop = spinslide::simulate_throw_si(cd, R, mu, g, gamma_cd, v0, w0);
+    const auto stop = spinslide::simulate_throw_si(
+        cd, spinslide::disk_radius{R}, spinslide::friction_coefficient{mu}, spinslide::gravity{g},
+        gamma_cd, spinslide::initial_speed{v0}, spinslide::initial_spin{w0});
     const std::vector<double> t = frame_times(stop.time);
     std::vector<double> t_scaled;
     t_scaled.reserve(t.size());

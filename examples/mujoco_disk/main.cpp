@@ -223,10 +223,12 @@ bool compare_throw(const throw_case& c, std::size_t index, double gamma, const o
                                       mujoco_scene::gravity};
   const double v0 = c.v0s * u.velocity_scale(), w0 = c.w0s * u.spin_scale();
   const double scale = v0 + mujoco_scene::radius * w0;
-  const double stop =
-      spinslide::simulate_throw_si(spinslide::uniform_disk<>(), mujoco_scene::radius,
-                                   mujoco_scene::friction, mujoco_scene::gravity, gamma, v0, w0)
-          .time;
+  const double stop = spinslide::simulate_throw_si(
+                          spinslide::uniform_disk<>(), spinslide::disk_radius{mujoco_scene::radius},
+                          spinslide::friction_coefficient{mujoco_scene::friction},
+                          spinslide::gravity{mujoco_scene::gravity}, gamma,
+                          spinslide::initial_speed{v0}, spinslide::initial_spin{w0})
+                          .time;
   const double duration = stop + 0.15;
   std::vector<record> runs{run(spinslide_model, v0, w0, duration)};
   for (const auto& f : native_models) runs.push_back(run(f, v0, w0, duration));

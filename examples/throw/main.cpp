@@ -70,7 +70,9 @@ const char* regime_name(spinslide::terminal_regime r) {
 template <class Profile>
 int run(const Profile& profile, const std::string& profile_name, double R, double mu, double v0,
         double omega0, double gamma, double g) {
-  const auto r = spinslide::simulate_throw_si(profile, R, mu, g, gamma, v0, omega0);
+  const auto r = spinslide::simulate_throw_si(
+      profile, spinslide::disk_radius{R}, spinslide::friction_coefficient{mu},
+      spinslide::gravity{g}, gamma, spinslide::initial_speed{v0}, spinslide::initial_spin{omega0});
   std::printf("profile %s, gamma = %g, R = %g m, mu = %g, g = %g m/s^2\n", profile_name.c_str(),
               gamma, R, mu, g);
   std::printf("throw: v0 = %g m/s, omega0 = %g rad/s (eps0 = v0/(R omega0) = %g)\n", v0, omega0,

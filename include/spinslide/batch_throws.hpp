@@ -45,15 +45,17 @@ namespace spinslide {
 /// named pair, so that speed and spin cannot be swapped silently.
 template <class Real>
 struct throw_start {
-  Real v0;      ///< the initial speed v0* (≥ 0)
-  Real omega0;  ///< the initial spin ω0* (≥ 0)
+  using value_type = Real;  ///< the floating type
+  Real v0;                  ///< the initial speed v0* (≥ 0)
+  Real omega0;              ///< the initial spin ω0* (≥ 0)
 };
 
 /// A throw's stop from a tabulated_throw: its stop time and distance.
 template <class Real>
 struct tabulated_stop {
-  Real time;      ///< the stop time t*
-  Real distance;  ///< the distance slid s*
+  using value_type = Real;  ///< the floating type
+  Real time;                ///< the stop time t*
+  Real distance;            ///< the distance slid s*
 };
 
 /// How a batch is run.

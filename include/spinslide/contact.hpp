@@ -35,6 +35,7 @@ namespace spinslide {
 /// torque about the normal (signed, positive counter-clockwise).
 template <class Vec2, class Real>
 struct planar_friction {
+  using value_type = Real;  ///< the floating type
   /// The force vector, against the sliding velocity (units of the normal force).
   Vec2 force;
   /// The torque about the normal, against the spin.

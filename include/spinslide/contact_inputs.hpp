@@ -21,6 +21,7 @@ namespace spinslide {
 /// The contact patch's radius a (a length, > 0).
 template <class Real>
 struct patch_radius {
+  using value_type = Real;  ///< the floating type
   /// Explicit, and not an aggregate: a plain number does not convert, not
   /// even by brace elision inside impulse_contact.
   explicit constexpr patch_radius(Real v) : value(v) {}
@@ -29,6 +30,7 @@ struct patch_radius {
 /// The normal impulse over the step, Λ = ∫N dt (≥ 0), for the impulse law.
 template <class Real>
 struct normal_impulse {
+  using value_type = Real;  ///< the floating type
   /// Explicit, and not an aggregate: a plain number does not convert, not
   /// even by brace elision inside impulse_contact.
   explicit constexpr normal_impulse(Real v) : value(v) {}
@@ -37,6 +39,7 @@ struct normal_impulse {
 /// The normal force N (≥ 0), for the force-level laws.
 template <class Real>
 struct normal_force {
+  using value_type = Real;  ///< the floating type
   /// Explicit, and not an aggregate: a plain number does not convert.
   explicit constexpr normal_force(Real v) : value(v) {}
   Real value;  ///< N
@@ -44,6 +47,7 @@ struct normal_force {
 /// The tangential spring's stiffness k_t (force per length, > 0).
 template <class Real>
 struct tangential_stiffness {
+  using value_type = Real;  ///< the floating type
   /// Explicit, and not an aggregate: a plain number does not convert.
   explicit constexpr tangential_stiffness(Real v) : value(v) {}
   Real value;  ///< k_t
@@ -51,6 +55,7 @@ struct tangential_stiffness {
 /// The twisting spring's stiffness k_θ (torque per radian, > 0).
 template <class Real>
 struct twisting_stiffness {
+  using value_type = Real;  ///< the floating type
   /// Explicit, and not an aggregate: a plain number does not convert.
   explicit constexpr twisting_stiffness(Real v) : value(v) {}
   Real value;  ///< k_θ
@@ -60,6 +65,7 @@ struct twisting_stiffness {
 /// scaled down linearly to 0 at rest.
 template <class Real>
 struct velocity_scale {
+  using value_type = Real;  ///< the floating type
   /// Explicit, and not an aggregate: a plain number does not convert.
   explicit constexpr velocity_scale(Real v) : value(v) {}
   Real value;  ///< v_s
@@ -67,6 +73,7 @@ struct velocity_scale {
 /// The Coulomb friction coefficient μ (≥ 0).
 template <class Real>
 struct friction_coefficient {
+  using value_type = Real;  ///< the floating type
   /// Explicit, and not an aggregate: a plain number does not convert, not
   /// even by brace elision inside impulse_contact.
   explicit constexpr friction_coefficient(Real v) : value(v) {}
@@ -76,6 +83,7 @@ struct friction_coefficient {
 /// One contact over one time step, for the impulse law (impulse_friction.hpp).
 template <class Real>
 struct impulse_contact {
+  using value_type = Real;              ///< the floating type
   patch_radius<Real> radius;            ///< a
   normal_impulse<Real> normal;          ///< Λ
   friction_coefficient<Real> friction;  ///< μ
@@ -85,6 +93,7 @@ struct impulse_contact {
 /// (spring_friction.hpp).
 template <class Real>
 struct force_contact {
+  using value_type = Real;              ///< the floating type
   patch_radius<Real> radius;            ///< a
   normal_force<Real> normal;            ///< N
   friction_coefficient<Real> friction;  ///< μ
@@ -98,6 +107,7 @@ force_contact(patch_radius<Real>, normal_force<Real>, friction_coefficient<Real>
 /// The two springs of a spring-history contact.
 template <class Real>
 struct spring_stiffness {
+  using value_type = Real;                ///< the floating type
   tangential_stiffness<Real> tangential;  ///< k_t
   twisting_stiffness<Real> twisting;      ///< k_θ
 };

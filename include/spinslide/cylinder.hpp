@@ -37,9 +37,10 @@ namespace spinslide {
 /// 𝓣 = B − A is an identity the tests check.
 template <class Real>
 struct tilt_integrals {
-  Real A;  ///< (1/π) ∬ y (ε − y)/ρ
-  Real B;  ///< (1/π) ∬ x²/ρ
-  Real C;  ///< (1/π) ∬ y (x² + y² − εy)/ρ
+  using value_type = Real;  ///< the floating type
+  Real A;                   ///< (1/π) ∬ y (ε − y)/ρ
+  Real B;                   ///< (1/π) ∬ x²/ρ
+  Real C;                   ///< (1/π) ∬ y (x² + y² − εy)/ρ
 };
 
 /// A, B, C by 2-D quadrature: the chord integral over x in closed form
@@ -93,10 +94,11 @@ tilt_integrals<Real> tilted_pressure_integrals(Real eps, const Policy& pol = Pol
 /// the whole face under p ∝ 1 + n·r, the last full contact.
 template <class Real>
 struct segment_friction {
-  Real force_x;  ///< force along the velocity, per μN
-  Real force_y;  ///< force along y (to the left of the motion), per μN
-  Real torque;   ///< torque about the normal, per μNR (negative: opposes the spin)
-  Real centre;   ///< distance of the centre of pressure from the axis, per R (along n)
+  using value_type = Real;  ///< the floating type
+  Real force_x;             ///< force along the velocity, per μN
+  Real force_y;             ///< force along y (to the left of the motion), per μN
+  Real torque;              ///< torque about the normal, per μNR (negative: opposes the spin)
+  Real centre;              ///< distance of the centre of pressure from the axis, per R (along n)
 };
 
 namespace detail {
@@ -226,6 +228,7 @@ enum class cylinder_contact { full, partial, tipped };
 /// per R) and the contact.  When `contact` is `tipped` every number is NaN.
 template <class Real>
 struct cylinder_friction {
+  using value_type = Real;   ///< the floating type
   Real along;                ///< force along the velocity, per μN
   Real sideways;             ///< force along v × ω, per μN
   Real torque;               ///< torque about the normal, per μNR, opposing the spin

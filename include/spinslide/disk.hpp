@@ -37,8 +37,9 @@ namespace spinslide {
 /// `force` is in units of μF_n, `torque` in units of μF_n R.
 template <class Real>
 struct force_torque_result {
-  Real force;   ///< 𝓕(ε), in units of μF_n
-  Real torque;  ///< 𝓣(ε), in units of μF_n R
+  using value_type = Real;  ///< the floating type
+  Real force;               ///< 𝓕(ε), in units of μF_n
+  Real torque;              ///< 𝓣(ε), in units of μF_n R
 };
 
 namespace detail {

@@ -20,6 +20,7 @@
 #include <spinslide/motion_types.hpp>
 #include <spinslide/profile_concept.hpp>
 #include <spinslide/terminal.hpp>
+#include <spinslide/throw_inputs.hpp>
 
 #include <limits>
 #include <vector>
@@ -93,24 +94,28 @@ stop_result<Real> simulate_throw(const Profile& profile, Real inertia_ratio, Rea
   return simulate_throw(profile, inertia_ratio, v0, omega0, [](const motion_sample<Real>&) {});
 }
 
-/// A throw in SI units: radius R [m], friction coefficient μ, gravity g
-/// [m/s²], γ = I/(mR²), speed v0 [m/s] and spin ω0 [rad/s] (both ≥ 0).
+/// A throw in SI units, its inputs named (throw_inputs.hpp): the disk's
+/// radius R [m], friction coefficient μ, gravity g [m/s²], γ = I/(mR²), speed
+/// v0 [m/s] and spin ω0 [rad/s] (both ≥ 0).
 /// Returns the stop time [s], distance [m] and angle [rad].  Bad input
 /// (R, μ, g not finite and > 0, γ as for simulate_throw, negative or NaN
 /// speeds) is a domain error.
 template <class Profile, class Real>
-stop_result<Real> simulate_throw_si(const Profile& profile, Real radius, Real friction_coefficient,
-                                    Real gravity, Real inertia_ratio, Real v0, Real omega0) {
+stop_result<Real> simulate_throw_si(const Profile& profile, disk_radius<Real> radius,
+                                    friction_coefficient<Real> mu, gravity<Real> g,
+                                    Real inertia_ratio, initial_speed<Real> v0,
+                                    initial_spin<Real> omega0) {
   using Policy = typename Profile::policy_type;
   using detail::argument_rule;
   static const char* function =
-      "spinslide::simulate_throw_si<%1%>(profile, %1%, %1%, %1%, %1%, %1%, %1%)";
+      "spinslide::simulate_throw_si<%1%>(profile, radius, friction_coefficient, gravity, %1%, "
+      "v0, omega0)";
   const si_units<Real> units{
-      detail::checked(function, "radius", radius, argument_rule::finite_positive, Policy()),
-      detail::checked(function, "friction_coefficient", friction_coefficient,
-                      argument_rule::finite_positive, Policy()),
-      detail::checked(function, "gravity", gravity, argument_rule::finite_positive, Policy())};
-  const auto in = detail::check_throw(function, inertia_ratio, v0, omega0, Policy());
+      detail::checked(function, "radius", radius.value, argument_rule::finite_positive, Policy()),
+      detail::checked(function, "friction_coefficient", mu.value, argument_rule::finite_positive,
+                      Policy()),
+      detail::checked(function, "gravity", g.value, argument_rule::finite_positive, Policy())};
+  const auto in = detail::check_throw(function, inertia_ratio, v0.value, omega0.value, Policy());
   if (detail::any_reported(units.radius, units.friction_coefficient, units.gravity) ||
       !in.valid()) {
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
@@ -122,6 +127,21 @@ stop_result<Real> simulate_throw_si(const Profile& profile, Real radius, Real fr
   r.distance *= units.distance_scale();
   r.angle *= units.angle_scale();
   return r;
+}
+
+/// \deprecated Six numbers in a row: use the overload with named inputs
+/// (throw_inputs.hpp; issue 28); goes in the next release.
+template <class Profile, class Real>
+[[deprecated(
+    "spinslide: name the inputs: simulate_throw_si(profile, disk_radius{R}, "
+    "friction_coefficient{mu}, gravity{g}, gamma, initial_speed{v0}, "
+    "initial_spin{w0})")]] stop_result<Real>
+simulate_throw_si(const Profile& profile, Real radius, Real friction_coefficient, Real gravity,
+                  Real inertia_ratio, Real v0, Real omega0) {
+  return simulate_throw_si(profile, disk_radius<Real>(radius),
+                           spinslide::friction_coefficient<Real>(friction_coefficient),
+                           spinslide::gravity<Real>(gravity), inertia_ratio,
+                           initial_speed<Real>(v0), initial_spin<Real>(omega0));
 }
 
 /// Dimensionless stop time t* of a throw (v0*, ω0*) for any profile and γ.

@@ -89,6 +89,7 @@ class dimensionless_motion {
 /// under gravity g [m/s²]: the factors from dimensionless to SI values.
 template <class Real>
 struct si_units {
+  using value_type = Real;    ///< the floating type
   Real radius;                ///< R [m]
   Real friction_coefficient;  ///< μ
   Real gravity;               ///< g [m/s²]

@@ -45,10 +45,11 @@ template <class Vec2, class Real>
 struct [[deprecated(
     "spinslide: impulse_friction returns friction_result {force, torque, "
     "sticking, ratio, curve()}")]] friction_impulse {
-  Vec2 linear;    ///< (P_x, P_y)
-  Real angular;   ///< L
-  bool sticking;  ///< true: the impulse stops the contact exactly
-  Real ratio;     ///< ε after the step (NaN if sticking)
+  using value_type = Real;  ///< the floating type
+  Vec2 linear;              ///< (P_x, P_y)
+  Real angular;             ///< L
+  bool sticking;            ///< true: the impulse stops the contact exactly
+  Real ratio;               ///< ε after the step (NaN if sticking)
   /// The old names of a friction_result's values.
   friction_impulse(const friction_result<Vec2, Real>& r)
       : linear(r.force), angular(r.torque), sticking(r.sticking), ratio(r.ratio) {}

@@ -15,17 +15,19 @@ namespace spinslide {
 /// One sample of a trajectory, dimensionless or SI.
 template <class Real>
 struct motion_sample {
-  Real time;      ///< t (t* or s)
-  Real speed;     ///< v (v* or m/s)
-  Real spin;      ///< ω (ω* or rad/s)
-  Real ratio;     ///< ε = v*/ω* (0 or ∞ once one of them is 0)
-  Real distance;  ///< distance slid so far (s* or m)
-  Real angle;     ///< angle turned so far (θ* or rad)
+  using value_type = Real;  ///< the floating type
+  Real time;                ///< t (t* or s)
+  Real speed;               ///< v (v* or m/s)
+  Real spin;                ///< ω (ω* or rad/s)
+  Real ratio;               ///< ε = v*/ω* (0 or ∞ once one of them is 0)
+  Real distance;            ///< distance slid so far (s* or m)
+  Real angle;               ///< angle turned so far (θ* or rad)
 };
 
 /// The outcome of a throw: when and where it stops, and how ε ended.
 template <class Real>
 struct stop_result {
+  using value_type = Real;        ///< the floating type
   Real time;                      ///< the stop time (both v and ω reach 0 then)
   Real distance;                  ///< distance slid
   Real angle;                     ///< angle turned

@@ -27,9 +27,10 @@ namespace spinslide {
 /// limit set's units, force = F/(μN) and torque = T/(μNa).
 template <class Real>
 struct tangent_wrench {
-  Real force_x;  ///< the force along the tangent plane's first axis
-  Real force_y;  ///< the force along its second axis
-  Real torque;   ///< the torque about the normal
+  using value_type = Real;  ///< the floating type
+  Real force_x;             ///< the force along the tangent plane's first axis
+  Real force_y;             ///< the force along its second axis
+  Real torque;              ///< the torque about the normal
 };
 
 /// A symmetric positive-definite 3×3 matrix over (force_x, force_y, torque),

@@ -281,7 +281,7 @@ class scaled : public profile_base<scaled<Profile>, typename Profile::value_type
 /// A load-weighted sum of profiles: fraction w_i of the load is distributed
 /// as profile i.  The weights are normalised; each must be ≥ 0 and finite and
 /// their sum > 0.  Example, a two-tier disk carrying 60% of the load on
-/// r < 1/2:  make_weighted_sum<double>({0.6, 0.4}, scaled(uniform_disk<>(), 0.5), annulus<>(0.5)).
+/// r < 1/2:  weighted_sum({0.6, 0.4}, scaled(uniform_disk<>(), 0.5), annulus<>(0.5)).
 template <class Real, class... Profiles>
 class weighted_sum
     : public profile_base<
@@ -300,6 +300,10 @@ class weighted_sum
   /// otherwise std::domain_error) of the `parts`.
   weighted_sum(const std::array<Real, size>& weights, Profiles... parts)
       : parts_(std::move(parts)...), w_(normalised(weights)) {}
+  /// The same from a braced list of weights, which class template argument
+  /// deduction reads the floating type from: weighted_sum({0.6, 0.4}, a, b).
+  weighted_sum(const Real (&weights)[size], Profiles... parts)
+      : weighted_sum(to_array(weights), std::move(parts)...) {}
 
   /// The normalised weights wᵢ.
   const std::array<Real, size>& weights() const { return w_; }
@@ -344,6 +348,11 @@ class weighted_sum
     return r;
   }
 
+  static std::array<Real, size> to_array(const Real (&weights)[size]) {
+    std::array<Real, size> w{};
+    for (std::size_t i = 0; i < size; ++i) w[i] = weights[i];
+    return w;
+  }
   static std::array<Real, size> normalised(std::array<Real, size> w) {
     static const char* function = "spinslide::weighted_sum<%1%>::weighted_sum(weights, parts...)";
     using detail::argument_rule;
@@ -379,10 +388,20 @@ class weighted_sum
   std::array<Real, size> w_;
 };
 
-/// Builds a weighted_sum; the weights are load fractions (normalised).
+/// Deduces weighted_sum's floating type from the weights, a braced list or a
+/// std::array: weighted_sum({0.6, 0.4}, scaled(uniform_disk<>(), 0.5), annulus<>(0.5)).
+template <class Real, std::size_t N, class... Profiles>
+weighted_sum(const Real (&)[N], Profiles...) -> weighted_sum<Real, Profiles...>;
+/// As above, from a std::array of weights.
+template <class Real, std::size_t N, class... Profiles>
+weighted_sum(const std::array<Real, N>&, Profiles...) -> weighted_sum<Real, Profiles...>;
+
+/// \deprecated Class template argument deduction is the one way to build a
+/// weighted_sum, as every other profile (issue 28): weighted_sum({0.6, 0.4},
+/// a, b); goes in the next release.
 template <class Real, class... Profiles>
-weighted_sum<Real, Profiles...> make_weighted_sum(const std::array<Real, sizeof...(Profiles)>& w,
-                                                  Profiles... parts) {
+[[deprecated("spinslide: write weighted_sum({w...}, parts...)")]] weighted_sum<Real, Profiles...>
+make_weighted_sum(const std::array<Real, sizeof...(Profiles)>& w, Profiles... parts) {
   return weighted_sum<Real, Profiles...>(w, std::move(parts)...);
 }
 

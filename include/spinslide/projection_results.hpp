@@ -28,7 +28,8 @@ namespace spinslide {
 /// (the values unknown) starts from a ratio alone, and `{}` from nothing.
 template <class Real>
 struct curve_point {
-  Real ratio = 0;  ///< ε (0 or +∞: no start)
+  using value_type = Real;  ///< the floating type
+  Real ratio = 0;           ///< ε (0 or +∞: no start)
   /// 𝓕(ε) (NaN: unknown, and the point serves as a ratio only)
   Real force = std::numeric_limits<Real>::quiet_NaN();
   /// 𝓣(ε) (NaN: unknown, and the point serves as a ratio only)
@@ -43,9 +44,10 @@ struct curve_point {
 /// (project_to_limit_set, limit_set.hpp).
 template <class Real>
 struct limit_projection {
-  Real force;     ///< f = |F|/(μN) of the nearest point of L
-  Real torque;    ///< t = |T|/(μNa) of the nearest point of L
-  bool sticking;  ///< true if the given point lies in L (then returned unchanged)
+  using value_type = Real;  ///< the floating type
+  Real force;               ///< f = |F|/(μN) of the nearest point of L
+  Real torque;              ///< t = |T|/(μNa) of the nearest point of L
+  bool sticking;            ///< true if the given point lies in L (then returned unchanged)
   Real ratio;  ///< the ratio ε of the curve point (NaN if sticking; +∞ at (1, 0), 0 at (0, ⟨r⟩))
   /// 𝓕′ at `ratio`, where the profile has it in closed form and the point is
   /// on the curve between the ends (else NaN).
@@ -64,6 +66,7 @@ struct limit_projection {
 /// planar_metric (project_to_limit_set, limit_set.hpp).
 template <class Real>
 struct wrench_projection {
+  using value_type = Real;     ///< the floating type
   tangent_wrench<Real> point;  ///< the nearest point of L₃ (in the limit set's units)
   bool sticking;               ///< true if the given wrench lies in L₃ (then returned unchanged)
   Real ratio;                  ///< ε of the curve point (NaN if sticking)
@@ -83,6 +86,7 @@ struct wrench_projection {
 /// projections' results.
 template <class Vec2, class Real>
 struct friction_result {
+  using value_type = Real;  ///< the floating type
   /// F (impulse_friction: the linear impulse P), on the body whose relative
   /// motion was given, in the tangent plane's axes
   Vec2 force;
@@ -99,7 +103,8 @@ struct friction_result {
 /// ratio alone); this name goes in the next release.
 template <class Real>
 struct [[deprecated("spinslide: use curve_point<Real>{ratio}")]] starting_ratio {
-  Real value;  ///< ε ≥ 0 (0 or +∞: no guess)
+  using value_type = Real;  ///< the floating type
+  Real value;               ///< ε ≥ 0 (0 or +∞: no guess)
   /// The ratio-only curve point curve_point<Real>{value}.
   operator curve_point<Real>() const { return curve_point<Real>{value}; }
 };

@@ -4,7 +4,7 @@
 //
 /// \file radial_profile.hpp
 /// The profile of any axisymmetric pressure p(r), its moments by quadrature
-/// at construction (`radial_profile`, `make_radial_profile`); included by
+/// at construction (`radial_profile`); included by
 /// profile.hpp with the other profiles.
 #ifndef SPINSLIDE_RADIAL_PROFILE_HPP
 #define SPINSLIDE_RADIAL_PROFILE_HPP
@@ -138,9 +138,24 @@ class radial_profile : public profile_base<radial_profile<Real, Pressure, Policy
   Real total_ = 0, mean_ = 0, mean_inverse_ = 0, mean_square_ = 0;
 };
 
-/// Builds a radial_profile from a callable p(r); `inner_ratio` as for its constructor.
+/// Deduces radial_profile's floating type: double from p(r) alone, else the
+/// inner ratio's (an integer inner ratio counts as double):
+/// radial_profile([](double r) { return 1 - r * r; }) or radial_profile(p, 0.125f).
+template <class Pressure>
+radial_profile(Pressure) -> radial_profile<double, Pressure>;
+/// As above, with an inner ratio.
+template <class Pressure, class Inner>
+radial_profile(Pressure, Inner)
+    -> radial_profile<std::conditional_t<std::is_integral<Inner>::value, double, Inner>, Pressure>;
+
+/// \deprecated Class template argument deduction is the one way to build a
+/// radial_profile, as every other profile (issue 28): radial_profile(p) or
+/// radial_profile(p, inner_ratio); goes in the next release.
 template <class Real = double, class Pressure>
-radial_profile<Real, Pressure> make_radial_profile(Pressure p, Real inner_ratio = 0) {
+[[deprecated(
+    "spinslide: write radial_profile(p) or radial_profile(p, inner_ratio)")]] radial_profile<Real,
+                                                                                             Pressure>
+make_radial_profile(Pressure p, Real inner_ratio = 0) {
   return radial_profile<Real, Pressure>(std::move(p), inner_ratio);
 }
 

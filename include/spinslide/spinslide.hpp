@@ -30,6 +30,7 @@
 #include <spinslide/tabulated.hpp>
 #include <spinslide/tabulated_throw.hpp>
 #include <spinslide/terminal.hpp>
+#include <spinslide/throw_inputs.hpp>
 #include <spinslide/trial_cap.hpp>
 
 #endif  // SPINSLIDE_SPINSLIDE_HPP

@@ -35,8 +35,9 @@ namespace spinslide {
 /// What a spring-history contact keeps from step to step.
 template <class Vec2, class Real>
 struct spring_history {
-  Vec2 displacement;  ///< the tangential spring's stretch ξ (the force is −k_t ξ)
-  Real twist;         ///< the twisting spring's angle φ (the torque is −k_θ φ)
+  using value_type = Real;  ///< the floating type
+  Vec2 displacement;        ///< the tangential spring's stretch ξ (the force is −k_t ξ)
+  Real twist;               ///< the twisting spring's angle φ (the torque is −k_θ φ)
   /// Where the last slip left the limit curve (its ratio ε, 0: none yet):
   /// the next search takes its first step from there, without evaluating
   /// the profile where the point has its values (a slip writes them), from
@@ -50,10 +51,11 @@ struct spring_history {
 template <class Vec2, class Real>
 struct [[deprecated(
     "spinslide: spring_history_friction returns friction_result")]] spring_friction {
-  Vec2 force;     ///< F
-  Real torque;    ///< T about the normal
-  bool sticking;  ///< true: the springs' trial state was admissible and is kept
-  Real ratio;     ///< ε of the capped state (NaN if sticking)
+  using value_type = Real;  ///< the floating type
+  Vec2 force;               ///< F
+  Real torque;              ///< T about the normal
+  bool sticking;            ///< true: the springs' trial state was admissible and is kept
+  Real ratio;               ///< ε of the capped state (NaN if sticking)
   /// The old names of a friction_result's values.
   spring_friction(const friction_result<Vec2, Real>& r)
       : force(r.force), torque(r.torque), sticking(r.sticking), ratio(r.ratio) {}

@@ -41,8 +41,9 @@ enum class terminal_regime {
 /// The terminal regime and the limit of ε: ε₀, +∞ or 0.
 template <class Real>
 struct terminal_state {
-  terminal_regime regime;  ///< how ε behaves as the motion stops
-  Real ratio;              ///< the limit of ε: ε₀, +∞ (pure sliding) or 0 (pure spinning)
+  using value_type = Real;  ///< the floating type
+  terminal_regime regime;   ///< how ε behaves as the motion stops
+  Real ratio;               ///< the limit of ε: ε₀, +∞ (pure sliding) or 0 (pure spinning)
 };
 
 /// The inertia ratios γ for which both ends of the flow repel, so that every
@@ -51,8 +52,9 @@ struct terminal_state {
 /// uniform disk: 1/4 < γ < 2/3.  The window is empty if lower ≥ upper.
 template <class Real>
 struct inertia_window {
-  Real lower;  ///< ⟨r²⟩/2: below it, ε → ∞
-  Real upper;  ///< 2⟨r⟩/⟨1/r⟩: above it, ε → 0
+  using value_type = Real;  ///< the floating type
+  Real lower;               ///< ⟨r²⟩/2: below it, ε → ∞
+  Real upper;               ///< 2⟨r⟩/⟨1/r⟩: above it, ε → 0
 };
 
 /// The window (W) of `p` from its moments: ⟨r²⟩/2 < γ < 2⟨r⟩/⟨1/r⟩.  No
@@ -177,11 +179,13 @@ terminal_state<Real> reached_from(const Profile& p, Real gamma, Real eps, const 
 /// (f > 0 below it and f < 0 above it) or repels.
 template <class Real>
 struct ratio_flow_zero {
-  Real ratio;       ///< ε₀
-  bool attracting;  ///< true: the flow from either side ends at ε₀
+  using value_type = Real;  ///< the floating type
+  Real ratio;               ///< ε₀
+  bool attracting;          ///< true: the flow from either side ends at ε₀
 };
 
-/// Every zero of f(ε) = ε − γ𝓕/𝓣 on (0, ∞) at which f changes sign, ascending,
+/// Every zero of the flow f(ε) = ε − γ𝓕/𝓣 on (0, ∞) at which f changes sign,
+/// ascending,
 /// each to full precision and classified.  They alternate: between two
 /// attracting zeros lies a repelling one, whose sides flow to different ends.
 /// Found by a march in ln ε that cannot step over a pair of zeros
@@ -189,10 +193,10 @@ struct ratio_flow_zero {
 /// double zero (f touches 0 without changing sign) is not reported.  γ not
 /// finite and > 0 is a domain error (the result is then one NaN zero).
 template <class Profile, class Real>
-std::vector<ratio_flow_zero<Real>> terminal_ratios(const Profile& profile, Real inertia_ratio) {
+std::vector<ratio_flow_zero<Real>> ratio_flow_zeros(const Profile& profile, Real inertia_ratio) {
   static_assert(detail::requires_profile<Profile>());
   using Policy = typename Profile::policy_type;
-  static const char* function = "spinslide::terminal_ratios<%1%>(profile, %1%)";
+  static const char* function = "spinslide::ratio_flow_zeros<%1%>(profile, %1%)";
   Real invalid = 0;
   if (!detail::check(function, "inertia_ratio", inertia_ratio,
                      detail::argument_rule::finite_positive, &invalid, Policy()))
@@ -204,12 +208,22 @@ std::vector<ratio_flow_zero<Real>> terminal_ratios(const Profile& profile, Real 
   return zeros;
 }
 
+/// \deprecated The zeros of the flow are ratio_flow_zeros (issue 28: the old
+/// name read as a plural of terminal_ratio(), the paper's ε₀); goes in the
+/// next release.
+template <class Profile, class Real>
+[[deprecated(
+    "spinslide: terminal_ratios is now ratio_flow_zeros")]] std::vector<ratio_flow_zero<Real>>
+terminal_ratios(const Profile& profile, Real inertia_ratio) {
+  return ratio_flow_zeros(profile, inertia_ratio);
+}
+
 /// The terminal regime for a motion that starts sliding and spinning
 /// (0 < ε < ∞), and the limit of ε, where that does not depend on the initial
 /// ratio: the flow has one attractor (0, ∞ or one zero ε₀).  If it has more
 /// (both ends attract, possible only when the load is concentrated near the
 /// centre; or f has several attracting zeros, possible for a load on thin
-/// rings: terminal_ratios lists them), the outcome depends on the initial
+/// rings: ratio_flow_zeros lists them), the outcome depends on the initial
 /// ratio: that is a domain error here; use the overload below.  γ not
 /// finite and > 0 is a domain error.
 template <class Profile, class Real>
@@ -227,7 +241,7 @@ terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio)
   const Real bad = detail::raise_argument_error(
       function, "inertia_ratio",
       "one for which the flow of eps has one attractor (for this one it has several, among "
-      "eps -> 0, eps -> infinity and the zeros listed by terminal_ratios, and the outcome "
+      "eps -> 0, eps -> infinity and the zeros listed by ratio_flow_zeros, and the outcome "
       "depends on the initial ratio: use the overload that takes it)",
       gamma, Policy());
   return {terminal_regime::sliding_and_spinning, bad};
@@ -237,7 +251,7 @@ terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio)
 /// 0 and ∞ stay where they are (pure spinning and pure sliding are invariant),
 /// a zero of f stays there, and otherwise ε follows the flow to the next zero
 /// of f in its direction of motion (an attracting one), or to 0 or ∞.  The
-/// zero is found by the march of terminal_ratios, which cannot step over a
+/// zero is found by the march of ratio_flow_zeros, which cannot step over a
 /// pair of zeros.
 template <class Profile, class Real>
 terminal_state<Real> terminal_motion(const Profile& profile, Real inertia_ratio,

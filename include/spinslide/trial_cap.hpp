@@ -50,15 +50,17 @@ namespace spinslide {
 /// class has members x, y and z, else 2.
 template <class Vec, class Real>
 struct spring_trial {
-  Vec displacement;     ///< ξ, the tangential spring (its force is −k_t ξ)
-  Real twist;           ///< φ, the twisting spring (its torque is −k_θ φ)
-  Vec damping_force;    ///< F_d, added to −k_t ξ in the trial force (zero: no damping)
-  Real damping_torque;  ///< T_d, added to −k_θ φ in the trial torque
+  using value_type = Real;  ///< the floating type
+  Vec displacement;         ///< ξ, the tangential spring (its force is −k_t ξ)
+  Real twist;               ///< φ, the twisting spring (its torque is −k_θ φ)
+  Vec damping_force;        ///< F_d, added to −k_t ξ in the trial force (zero: no damping)
+  Real damping_torque;      ///< T_d, added to −k_θ φ in the trial torque
 };
 
 /// The capped friction of a DEM contact, and what the contact keeps.
 template <class Vec, class Real>
 struct capped_friction {
+  using value_type = Real;  ///< the floating type
   Vec force;                ///< F, on the body whose relative motion stretched the springs
   Real torque;              ///< T about the normal
   bool sticking;            ///< true: the trial state was admissible, and is kept

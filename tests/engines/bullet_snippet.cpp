@@ -47,8 +47,10 @@ int main() try {
   // snippet end
 
   const double gamma = static_cast<double>(inertia.z()) / (0.0071 * 0.012 * 0.012);
-  const auto exact =
-      spinslide::simulate_throw_si(spinslide::uniform_disk<>(), 0.012, 0.3, 9.81, gamma, 0.1, 8.0);
+  const auto exact = spinslide::simulate_throw_si(
+      spinslide::uniform_disk<>(), spinslide::disk_radius{0.012},
+      spinslide::friction_coefficient{0.3}, spinslide::gravity{9.81}, gamma,
+      spinslide::initial_speed{0.1}, spinslide::initial_spin{8.0});
   const btVector3 at = coin.getCenterOfMassPosition();
   const double distance = std::hypot(static_cast<double>(at.x()), static_cast<double>(at.y()));
   btScalar yaw, pitch, roll;

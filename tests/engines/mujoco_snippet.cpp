@@ -33,8 +33,10 @@ int main() try {
   // snippet end
 
   const double gamma = model->body_inertia[5] / (model->body_mass[1] * 0.06 * 0.06);
-  const auto exact =
-      spinslide::simulate_throw_si(spinslide::uniform_disk<>(), 0.06, 0.2, 9.81, gamma, v0, omega0);
+  const auto exact = spinslide::simulate_throw_si(
+      spinslide::uniform_disk<>(), spinslide::disk_radius{0.06},
+      spinslide::friction_coefficient{0.2}, spinslide::gravity{9.81}, gamma,
+      spinslide::initial_speed{v0}, spinslide::initial_spin{omega0});
   const double distance = std::hypot(data->qpos[0], data->qpos[1]);
   const double angle = 2 * std::atan2(data->qpos[6], data->qpos[3]);  // quaternion about z
   const double speed = std::hypot(data->qvel[0], data->qvel[1]), spin = std::fabs(data->qvel[5]);
