@@ -34,6 +34,8 @@ namespace spinslide {
 template <class Real = double, class Policy = boost::math::policies::policy<>>
 class uncoupled_caps : public profile_base<uncoupled_caps<Real, Policy>, Real, Policy> {
  public:
+  /// 𝓕 and 𝓣 are capped independently: the limit set is a box (has_box_limit_set).
+  static constexpr bool box_limit_set = true;
   /// `torque_cap` = ⟨r⟩ of the imitated profile (the torque cap in units of
   /// μNa): finite and at least the smallest normal number, otherwise
   /// std::domain_error.

@@ -15,6 +15,7 @@
 
 #include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/disk_fast.hpp>
+#include <spinslide/force_torque_result.hpp>
 
 #include <boost/cstdint.hpp>
 #include <boost/math/constants/constants.hpp>
@@ -32,15 +33,6 @@
 #endif
 
 namespace spinslide {
-
-/// 𝓕(ε) and 𝓣(ε) at one ε, as returned by force_torque().
-/// `force` is in units of μF_n, `torque` in units of μF_n R.
-template <class Real>
-struct force_torque_result {
-  using value_type = Real;  ///< the floating type
-  Real force;               ///< 𝓕(ε), in units of μF_n
-  Real torque;              ///< 𝓣(ε), in units of μF_n R
-};
 
 namespace detail {
 

@@ -18,7 +18,6 @@
 #ifndef SPINSLIDE_LIMIT_SET_HPP
 #define SPINSLIDE_LIMIT_SET_HPP
 
-#include <spinslide/approximations.hpp>
 #include <spinslide/detail/checks.hpp>
 #include <spinslide/detail/limit_projector.hpp>
 #include <spinslide/detail/metric_projector.hpp>
@@ -34,11 +33,6 @@
 namespace spinslide {
 
 namespace detail {
-
-template <class P>
-struct is_uncoupled_caps : std::false_type {};
-template <class Real, class Policy>
-struct is_uncoupled_caps<uncoupled_caps<Real, Policy>> : std::true_type {};
 
 // What every projection requires of its profile and arguments, at compile time.
 template <class Profile, class Real>
@@ -78,7 +72,7 @@ limit_projection<Real> project_checked(const Profile& profile, Real force, Real 
 template <class Profile, class Real>
 constexpr void require_smooth_curve() {
   require_projectable<Profile, Real>();
-  static_assert(!is_uncoupled_caps<Profile>::value,
+  static_assert(!has_box_limit_set<Profile>::value,
                 "project_to_limit_set(tangent_wrench, planar_metric) and impulse_friction: the "
                 "uncoupled caps' limit set is a box, whose corners the 3-D projection's Newton "
                 "iteration cannot resolve; project their magnitudes with the 2-D "

@@ -8,7 +8,7 @@
 #ifndef SPINSLIDE_MOTION_TYPES_HPP
 #define SPINSLIDE_MOTION_TYPES_HPP
 
-#include <spinslide/terminal.hpp>
+#include <spinslide/terminal_state.hpp>
 
 namespace spinslide {
 

@@ -12,7 +12,7 @@
 #define SPINSLIDE_PROFILE_BASE_HPP
 
 #include <spinslide/detail/checks.hpp>
-#include <spinslide/disk.hpp>
+#include <spinslide/force_torque_result.hpp>
 
 #include <string>
 

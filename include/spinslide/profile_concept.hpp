@@ -30,7 +30,9 @@
 #ifndef SPINSLIDE_PROFILE_CONCEPT_HPP
 #define SPINSLIDE_PROFILE_CONCEPT_HPP
 
-#include <spinslide/disk.hpp>
+#include <spinslide/force_torque_result.hpp>
+
+#include <boost/math/policies/policy.hpp>
 
 #include <limits>
 #include <type_traits>
@@ -88,6 +90,15 @@ struct obeys_maximum_dissipation : std::true_type {};
 template <class P>
 struct obeys_maximum_dissipation<P, std::void_t<decltype(std::decay_t<P>::maximum_dissipation)>>
     : std::integral_constant<bool, std::decay_t<P>::maximum_dissipation> {};
+
+/// Whether the profile's limit set is a box (𝓕 and 𝓣 capped independently:
+/// uncoupled_caps declares `static constexpr bool box_limit_set = true;`),
+/// whose corners the 3-D projection's Newton cannot resolve (limit_set.hpp).
+template <class P, class = void>
+struct has_box_limit_set : std::false_type {};
+template <class P>
+struct has_box_limit_set<P, std::void_t<decltype(std::decay_t<P>::box_limit_set)>>
+    : std::integral_constant<bool, std::decay_t<P>::box_limit_set> {};
 
 #if defined(__cpp_concepts)
 /// The friction profile concept (C++20): the same requirements as is_friction_profile.

@@ -19,6 +19,7 @@
 #include <spinslide/detail/ratio_flow.hpp>
 #include <spinslide/profile.hpp>
 #include <spinslide/profile_concept.hpp>
+#include <spinslide/terminal_state.hpp>
 
 #include <boost/math/tools/toms748_solve.hpp>
 
@@ -29,22 +30,6 @@
 #include <vector>
 
 namespace spinslide {
-
-/// How the ratio ε behaves as the motion stops.  Sliding and spinning always
-/// end at the same instant; the regime says which of them dominates on the way.
-enum class terminal_regime {
-  pure_sliding,          ///< ε → ∞: the spin dies relatively faster
-  sliding_and_spinning,  ///< ε → ε₀, a finite attracting zero of f
-  pure_spinning          ///< ε → 0: the sliding dies relatively faster
-};
-
-/// The terminal regime and the limit of ε: ε₀, +∞ or 0.
-template <class Real>
-struct terminal_state {
-  using value_type = Real;  ///< the floating type
-  terminal_regime regime;   ///< how ε behaves as the motion stops
-  Real ratio;               ///< the limit of ε: ε₀, +∞ (pure sliding) or 0 (pure spinning)
-};
 
 /// The inertia ratios γ for which both ends of the flow repel, so that every
 /// motion that starts sliding and spinning ends with a finite ratio ε₀:

@@ -10,7 +10,7 @@
 
 #include <spinslide/detail/force_slope.hpp>
 #include <spinslide/detail/matrix3.hpp>
-#include <spinslide/disk.hpp>
+#include <spinslide/force_torque_result.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 

@@ -32,7 +32,7 @@
 
 #include <spinslide/detail/force_slope.hpp>
 #include <spinslide/detail/product.hpp>
-#include <spinslide/disk.hpp>
+#include <spinslide/force_torque_result.hpp>
 #include <spinslide/projection_results.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>

@@ -9,7 +9,7 @@
 #ifndef SPINSLIDE_DETAIL_RING_KERNEL_HPP
 #define SPINSLIDE_DETAIL_RING_KERNEL_HPP
 
-#include <spinslide/disk.hpp>
+#include <spinslide/force_torque_result.hpp>
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/math/special_functions/ellint_rd.hpp>

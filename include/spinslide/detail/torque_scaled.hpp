@@ -20,7 +20,7 @@
 #define SPINSLIDE_DETAIL_TORQUE_SCALED_HPP
 
 #include <spinslide/detail/force_slope.hpp>
-#include <spinslide/disk.hpp>
+#include <spinslide/force_torque_result.hpp>
 #include <spinslide/profile_concept.hpp>
 
 #include <limits>
