@@ -130,13 +130,37 @@ class annulus : public profile_base<annulus<Real, Policy>, Real, Policy> {
   Real b_;
 };
 
+namespace detail {
+// What Hertz's and Boussinesq's profiles share but their moments and name:
+// 𝓕 and 𝓣 from the closed forms of detail/elastic_closed_forms.hpp for the
+// load `Load`, and 𝓕′, 𝓣′ checked (issue 28: the two were written twice).
+template <class Self, class Load, class Real, class Policy>
+class elastic_profile : public profile_base<Self, Real, Policy> {
+ public:
+  /// 𝓕′(ε) for ε ∈ [0, ∞] (𝓕′(∞) = 0); NaN or ε < 0 is a domain error
+  /// through the policy.
+  Real force_derivative(Real eps) const {
+    return checked_elastic_derivatives<Load>(eps, Self::force_derivative_name, Policy()).force;
+  }
+  /// 𝓣′(ε) = −ε𝓕′(ε) for ε ∈ [0, ∞) (0 at both ends); as force_derivative().
+  Real torque_derivative(Real eps) const {
+    return checked_elastic_derivatives<Load>(eps, Self::torque_derivative_name, Policy()).torque;
+  }
+
+ private:
+  friend class profile_base<Self, Real, Policy>;
+  force_torque_result<Real> general(Real eps) const { return elastic_at<Load>(eps, false); }
+};
+}  // namespace detail
+
 /// Hertz pressure p ∝ √(1 − r²): an elastic sphere pressed on a flat.
 /// ⟨r⟩ = 3π/16, ⟨1/r⟩ = 3π/4, ⟨r²⟩ = 2/5.  Closed forms (docs/theory.md §6,
 /// (E1)–(E3)): for ε ≤ 1, 𝓕 = (3π/32)ε(4 − ε²) and 𝓣 = (3π/128)(8 − 8ε² + 3ε⁴);
 /// for ε > 1, elementary in asin(1/ε) and √(ε² − 1), and a series in 1/ε²
 /// where those cancel.  Within 4 ulp in double, derivatives within 16.
 template <class Real = double, class Policy = boost::math::policies::policy<>>
-class hertz : public profile_base<hertz<Real, Policy>, Real, Policy> {
+class hertz
+    : public detail::elastic_profile<hertz<Real, Policy>, detail::hertz_load, Real, Policy> {
  public:
   /// ⟨r⟩ = 3π/16.
   Real mean_radius() const { return 3 * boost::math::constants::pi<Real>() / 16; }
@@ -144,26 +168,15 @@ class hertz : public profile_base<hertz<Real, Policy>, Real, Policy> {
   Real mean_inverse_radius() const { return 3 * boost::math::constants::pi<Real>() / 4; }
   /// ⟨r²⟩ = 2/5.
   Real mean_square_radius() const { return Real(2) / 5; }
-  /// 𝓕′(ε) for ε ∈ [0, ∞] (𝓕′(0) = 3π/8, 𝓕′(∞) = 0); NaN or ε < 0 is a
-  /// domain error through the policy.
-  Real force_derivative(Real eps) const {
-    return detail::checked_elastic_derivatives<detail::hertz_load>(
-               eps, "spinslide::hertz<%1%>::force_derivative(%1%)", Policy())
-        .force;
-  }
-  /// 𝓣′(ε) = −ε𝓕′(ε) for ε ∈ [0, ∞) (0 at both ends); as force_derivative().
-  Real torque_derivative(Real eps) const {
-    return detail::checked_elastic_derivatives<detail::hertz_load>(
-               eps, "spinslide::hertz<%1%>::torque_derivative(%1%)", Policy())
-        .torque;
-  }
 
  private:
   friend class profile_base<hertz, Real, Policy>;
+  friend class detail::elastic_profile<hertz, detail::hertz_load, Real, Policy>;
   static constexpr const char* name = "spinslide::hertz<%1%>";
-  force_torque_result<Real> general(Real eps) const {
-    return detail::elastic_at<detail::hertz_load>(eps, false);
-  }
+  static constexpr const char* force_derivative_name =
+      "spinslide::hertz<%1%>::force_derivative(%1%)";
+  static constexpr const char* torque_derivative_name =
+      "spinslide::hertz<%1%>::torque_derivative(%1%)";
 };
 
 /// Boussinesq pressure p ∝ 1/√(1 − r²): a rigid flat punch on an elastic
@@ -174,7 +187,8 @@ class hertz : public profile_base<hertz<Real, Policy>, Real, Policy> {
 /// and a series in 1/ε² where those cancel.  Within 4 ulp in double,
 /// derivatives within 16.
 template <class Real = double, class Policy = boost::math::policies::policy<>>
-class boussinesq : public profile_base<boussinesq<Real, Policy>, Real, Policy> {
+class boussinesq : public detail::elastic_profile<boussinesq<Real, Policy>, detail::boussinesq_load,
+                                                  Real, Policy> {
  public:
   /// ⟨r⟩ = π/4.
   Real mean_radius() const { return boost::math::constants::pi<Real>() / 4; }
@@ -182,26 +196,15 @@ class boussinesq : public profile_base<boussinesq<Real, Policy>, Real, Policy> {
   Real mean_inverse_radius() const { return boost::math::constants::pi<Real>() / 2; }
   /// ⟨r²⟩ = 2/3.
   Real mean_square_radius() const { return Real(2) / 3; }
-  /// 𝓕′(ε) for ε ∈ [0, ∞] (π/4 for ε ≤ 1, 𝓕′(∞) = 0); NaN or ε < 0 is a
-  /// domain error through the policy.
-  Real force_derivative(Real eps) const {
-    return detail::checked_elastic_derivatives<detail::boussinesq_load>(
-               eps, "spinslide::boussinesq<%1%>::force_derivative(%1%)", Policy())
-        .force;
-  }
-  /// 𝓣′(ε) = −ε𝓕′(ε) for ε ∈ [0, ∞) (0 at both ends); as force_derivative().
-  Real torque_derivative(Real eps) const {
-    return detail::checked_elastic_derivatives<detail::boussinesq_load>(
-               eps, "spinslide::boussinesq<%1%>::torque_derivative(%1%)", Policy())
-        .torque;
-  }
 
  private:
   friend class profile_base<boussinesq, Real, Policy>;
+  friend class detail::elastic_profile<boussinesq, detail::boussinesq_load, Real, Policy>;
   static constexpr const char* name = "spinslide::boussinesq<%1%>";
-  force_torque_result<Real> general(Real eps) const {
-    return detail::elastic_at<detail::boussinesq_load>(eps, false);
-  }
+  static constexpr const char* force_derivative_name =
+      "spinslide::boussinesq<%1%>::force_derivative(%1%)";
+  static constexpr const char* torque_derivative_name =
+      "spinslide::boussinesq<%1%>::torque_derivative(%1%)";
 };
 
 namespace detail {
@@ -211,23 +214,22 @@ elastic_value_slope<Real> capped(elastic_value_slope<Real> r) {
   if (r.value.force > 1) r.value.force = 1;
   return r;
 }
-// Hertz's and Boussinesq's 𝓕, 𝓣, 𝓕′ and 𝓕″ in one call (force_slope.hpp).
-template <class Real, class Policy>
-struct fused_value_slope<hertz<Real, Policy>> : std::true_type {
-  static constexpr bool bounded_curvature = true;
-  template <bool Curvature = true>
-  static elastic_value_slope<Real> at(const hertz<Real, Policy>&, Real eps) {
-    return capped(elastic_value_and_slope<hertz_load, Curvature>(eps));
+// Hertz's and Boussinesq's 𝓕, 𝓣, 𝓕′ and 𝓕″ in one call (force_slope.hpp):
+// the closed forms of the load `Load`, 𝓕″ bounded or not.
+template <class Load, bool BoundedCurvature>
+struct elastic_fused_value_slope : std::true_type {
+  static constexpr bool bounded_curvature = BoundedCurvature;
+  template <bool Curvature = true, class P>
+  static elastic_value_slope<typename P::value_type> at(const P&, typename P::value_type eps) {
+    return capped(elastic_value_and_slope<Load, Curvature>(eps));
   }
 };
 template <class Real, class Policy>
-struct fused_value_slope<boussinesq<Real, Policy>> : std::true_type {
-  static constexpr bool bounded_curvature = false;  // −k³/w as ε → 1⁺
-  template <bool Curvature = true>
-  static elastic_value_slope<Real> at(const boussinesq<Real, Policy>&, Real eps) {
-    return capped(elastic_value_and_slope<boussinesq_load, Curvature>(eps));
-  }
-};
+struct fused_value_slope<hertz<Real, Policy>> : elastic_fused_value_slope<hertz_load, true> {};
+// (−k³/w as ε → 1⁺: unbounded.)
+template <class Real, class Policy>
+struct fused_value_slope<boussinesq<Real, Policy>>
+    : elastic_fused_value_slope<boussinesq_load, false> {};
 }  // namespace detail
 
 /// A profile shrunk to the radius a ∈ (0, 1]: 𝓕_a(ε) = 𝓕(ε/a), 𝓣_a(ε) = a 𝓣(ε/a);
