@@ -57,6 +57,7 @@ class leg_flow {
       : p_(&p), gamma_(inertia_ratio), by_speed_(by_speed) {}
 
   bool by_speed() const { return by_speed_; }
+  Real inertia_ratio() const { return gamma_; }
 
   /// q of the ratio ε in this variable.
   Real log_ratio(Real eps) const {

@@ -277,7 +277,7 @@ class stop_integrator {
     out_.distance = end.distance;
     out_.angle = end.angle;
     const motion_sample<Real> rest{out_.time, 0, 0, out_.terminal.ratio, out_.distance, out_.angle};
-    for (; !times_.done();) times_.give(tail_sample(times_.next(), tail_start_, rest));
+    while (!times_.done()) times_.give(tail_sample(times_.next(), tail_start_, rest));
     observe_(rest);
     return true;
   }

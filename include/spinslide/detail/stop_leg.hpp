@@ -115,7 +115,7 @@ class stop_leg {
 
   /// The leg from `start`; `terminal_ratio` is ε where the motion ends.
   stop_leg(const Profile& p, Real inertia_ratio, const leg_start<Real>& start, Real terminal_ratio)
-      : flow_(p, inertia_ratio, start.by_speed), start_(start), gamma_(inertia_ratio) {
+      : flow_(p, inertia_ratio, start.by_speed), start_(start) {
     first_ = flow_.at(start.q);
     path_ = leg_path::from(first_, terminal_q(terminal_ratio));
     g_target_ = inf;
@@ -131,10 +131,10 @@ class stop_leg {
     rho_unit_ = static_cast<Real>(std::exp(rho_log_ / 4));
   }
 
-  bool by_speed() const { return start_.by_speed; }
+  bool by_speed() const { return flow_.by_speed(); }
   const leg_path& path() const { return path_; }
   const leg_start<Real>& start() const { return start_; }
-  Real inertia_ratio() const { return gamma_; }
+  Real inertia_ratio() const { return flow_.inertia_ratio(); }
   /// The flow where the leg starts.
   const flow_point<Real>& first() const { return first_; }
   /// The flow at q.
@@ -169,7 +169,7 @@ class stop_leg {
   /// t from t̂, a product taken without spurious over- or underflow (γ, L
   /// and M may each be near the ends of the type).
   Real time_of(double t_hat) const {
-    const Real unit = by_speed() ? Real(1) : gamma_;
+    const Real unit = by_speed() ? Real(1) : inertia_ratio();
     return start_.time + detail::product(unit, start_.lead, Real(t_hat));
   }
 
@@ -201,21 +201,21 @@ class stop_leg {
 
   Real distance_of(const leg_position& at) const {
     const Real lead = start_.lead, other = start_.other;
-    return start_.distance + (by_speed()
-                                  ? detail::product(lead, lead, Real(at.lead_travel))
-                                  : detail::product(gamma_, lead, other, Real(at.other_travel),
-                                                    rho_unit_, rho_unit_, rho_unit_, rho_unit_));
+    return start_.distance +
+           (by_speed() ? detail::product(lead, lead, Real(at.lead_travel))
+                       : detail::product(inertia_ratio(), lead, other, Real(at.other_travel),
+                                         rho_unit_, rho_unit_, rho_unit_, rho_unit_));
   }
   Real angle_of(const leg_position& at) const {
     const Real lead = start_.lead, other = start_.other;
-    return start_.angle + (by_speed() ? detail::product(lead, other, Real(at.other_travel),
-                                                        rho_unit_, rho_unit_, rho_unit_, rho_unit_)
-                                      : detail::product(gamma_, lead, lead, Real(at.lead_travel)));
+    return start_.angle +
+           (by_speed() ? detail::product(lead, other, Real(at.other_travel), rho_unit_, rho_unit_,
+                                         rho_unit_, rho_unit_)
+                       : detail::product(inertia_ratio(), lead, lead, Real(at.lead_travel)));
   }
 
   leg_flow<Profile> flow_;
   leg_start<Real> start_;
-  Real gamma_;
   flow_point<Real> first_{};
   leg_path path_{};
   double g_target_ = inf;

@@ -81,7 +81,7 @@ void sample_panel(const stop_leg<Profile>& leg, const leg_panel& pn, const panel
   auto q_at = [&](double x, const leg_position& p) {
     return pn.in_u ? start.q + r.integral_to(x, c_q) : leg.path().q_of(p.s);
   };
-  for (; times.due_by(t_end);) {
+  while (times.due_by(t_end)) {
     const Real tk = times.next();
     auto miss = [&](double x) { return static_cast<double>(leg.time_of(at_x(x).time) - tk); };
     double x = 1;
