@@ -119,7 +119,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                           : big    ? validity::ambiguous
                                    : validity::valid;
       expect(v3, "contact_law(3-D)", [&] {
-        const auto r = law(v, w, n, c);
+        const auto r = law(v, w, spinslide::contact_normal{n}, c);
         const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
         const double wn = w[0] * n[0] + w[1] * n[1] + w[2] * n[2];
         double power = 0;

@@ -84,7 +84,7 @@ TEST(ContactLaw, ThreeDimensionalMatchesPlanarInTheTangentPlane) {
     v[i] = vt1 * t1[i] + vt2 * t2[i] + vn * n[i];  // the normal part must be ignored
     w[i] = wn * n[i] + wt * t1[i];                 // rolling must be ignored
   }
-  const auto r3 = law(v, w, n, contact_of(0.02, 3.0, 0.4));
+  const auto r3 = law(v, w, contact_normal{n}, contact_of(0.02, 3.0, 0.4));
   const auto r2 = law(vec2{vt1, vt2}, wn, contact_of(0.02, 3.0, 0.4));
   // Removing the normal part (|v_n| = 5 against |v_t| = 0.36) costs ~4 bits.
   for (std::size_t i = 0; i < 3; ++i) {
@@ -100,7 +100,8 @@ TEST(ContactLaw, ThreeDimensionalMatchesPlanarInTheTangentPlane) {
 TEST(ContactLaw, WrenchAboutAnyPoint) {
   const contact_law<> law(uniform_disk<>(), velocity_scale<double>{1e-6});
   const vec3 n{0, 0, 1};
-  const auto r = law(vec3{-0.5, 0, 0}, vec3{0, 0, 3}, n, contact_of(0.05, 2.0, 0.5));
+  const auto r =
+      law(vec3{-0.5, 0, 0}, vec3{0, 0, 3}, contact_normal{n}, contact_of(0.05, 2.0, 0.5));
   const double h = 0.25;  // exact in binary, as is 3 - h
   const vec3 centre{1, 2, 3 - h}, mass_centre{1, 2, 3};
   const auto about_x = wrench_about(r, centre, mass_centre);
@@ -121,9 +122,10 @@ TEST(ContactLaw, UsersVectorTypes) {
   EXPECT_EQ(b.force.y, s.force[1]);
   EXPECT_EQ(b.torque, s.torque);
   const contact_law<> law(uniform_disk<>(), velocity_scale<double>{1e-6});
-  const auto e = law(eigen_like3(0.3, 0.4, 0), eigen_like3(0, 0, 10), eigen_like3(0, 0, 1),
+  const auto e = law(eigen_like3(0.3, 0.4, 0), eigen_like3(0, 0, 10),
+                     contact_normal{eigen_like3(0, 0, 1)}, contact_of(0.05, 2.0, 0.5));
+  const auto a = law(vec3{0.3, 0.4, 0}, vec3{0, 0, 10}, contact_normal{vec3{0, 0, 1}},
                      contact_of(0.05, 2.0, 0.5));
-  const auto a = law(vec3{0.3, 0.4, 0}, vec3{0, 0, 10}, vec3{0, 0, 1}, contact_of(0.05, 2.0, 0.5));
   for (int i = 0; i < 3; ++i) {  // eigen_like3 is indexed by int, std::array by std::size_t
     EXPECT_EQ(e.force[i], a.force[static_cast<std::size_t>(i)]);
     EXPECT_EQ(e.torque[i], a.torque[static_cast<std::size_t>(i)]);
@@ -275,7 +277,8 @@ TEST(ContactLaw, RegressionTinySlidingSpeedIn3D) {
   const contact_law<> law(uniform_disk<>(), velocity_scale<double>{1e-6});
   const double v = 9.88131291682493088353e-323, N = 8.98846567431157854073e+307,
                mu = 4.58359719837098179601e-05;
-  const auto r = law(vec3{v, 0, 0}, vec3{0, 0, 0}, vec3{0, 0, 1}, contact_of(1.0, N, mu));
+  const auto r =
+      law(vec3{v, 0, 0}, vec3{0, 0, 0}, contact_normal{vec3{0, 0, 1}}, contact_of(1.0, N, mu));
   const double expected =
       -double(static_cast<long double>(mu) * N * v / law.velocity_scale());  // −4.1e-13
   EXPECT_NEAR(r.force[0], expected, 4 * double_eps * -expected);
@@ -339,8 +342,9 @@ TEST(ContactLaw, RegressionTangentialProjectionNearTheLargestValue) {
   const vec3 w{1.00000000000000022204, max_d, 0.666666666666666629659};
   const double a = 6.36050773210021198955e-300, N = 0.0549016181728579980015, mu = max_d;
   const vec3 v{max_d, -6.26433498638888716604e+194, max_d};
-  const auto r = law(v, w, n, contact_of(a, N, mu));
-  const auto scaled = law(vec3{v[0] / 1024, v[1] / 1024, v[2] / 1024}, w, n, contact_of(a, N, mu));
+  const auto r = law(v, w, contact_normal{n}, contact_of(a, N, mu));
+  const auto scaled =
+      law(vec3{v[0] / 1024, v[1] / 1024, v[2] / 1024}, w, contact_normal{n}, contact_of(a, N, mu));
   using big = boost::multiprecision::cpp_bin_float_50;
   big vn = 0, wn = 0, vt_len2 = 0;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -385,7 +389,8 @@ TEST(ContactLaw, RegressionNaNVelocityComponentBesideAZero) {
   const contact_law<> law(uniform_disk<>(), velocity_scale<double>{1e-6});
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(law(vec2{0, nan}, 0.0, contact_of(2.0, 0.5, 2.0 / 3)), std::domain_error);
-  EXPECT_THROW(law(vec3{0, nan, 0}, vec3{0, 0, 0}, vec3{0, 0, 1}, contact_of(2.0, 0.5, 2.0 / 3)),
+  EXPECT_THROW(law(vec3{0, nan, 0}, vec3{0, 0, 0}, contact_normal{vec3{0, 0, 1}},
+                   contact_of(2.0, 0.5, 2.0 / 3)),
                std::domain_error);
 }
 
@@ -403,7 +408,7 @@ TEST(ContactLaw, RegressionForceOfAProfileRoundedAboveOne) {
   const annulus<double> ann(b);
   const auto sum = weighted_sum(
       {w1, w2}, scaled<uniform_disk<double>>(uniform_disk<double>(), scale), ring<double>());
-  const vec3 n{0, 0, 1};
+  const contact_normal<vec3> n{vec3{0, 0, 1}};
   const double a_ann = 6.93531866257113469774e-88;
   const contact_law<annulus<double>> law_a(ann, velocity_scale<double>{9.99999999999999954748e-07});
   const auto a = law_a(vec3{1, 1, 1}, vec3{1, 0.556884765625, 1}, n, contact_of(a_ann, max_d, 1.0));

@@ -157,13 +157,19 @@ struct scan_result {
   double jump = 0;
 };
 
+// The heights of a scan: `points` doubles above `from`, `stride` doubles apart.
+struct height_scan {
+  double from;
+  int points, stride;
+};
+
 template <class Policy>
-scan_result scan_heights(double eps, double from, int points, int stride, const Policy& pol) {
+scan_result scan_heights(double eps, const height_scan& scan, const Policy& pol) {
   scan_result out;
-  cylinder_friction<double> previous = tilted_cylinder_friction(eps, from, 0.05, 0.3, pol);
-  double h = from;
-  for (int i = 0; i < points; ++i) {
-    for (int k = 0; k < stride; ++k) h = std::nextafter(h, 1.0);
+  cylinder_friction<double> previous = tilted_cylinder_friction(eps, scan.from, 0.05, 0.3, pol);
+  double h = scan.from;
+  for (int i = 0; i < scan.points; ++i) {
+    for (int k = 0; k < scan.stride; ++k) h = std::nextafter(h, 1.0);
     try {
       const auto now = tilted_cylinder_friction(eps, h, 0.05, 0.3, pol);
       out.tipped += now.contact == cylinder_contact::tipped;
@@ -195,8 +201,8 @@ TEST(TiltedCylinder, RegressionNoExceptionJustPastLiftOff) {
   using boost::math::policies::policy;
   const double band_from = 0.0482474493247417;  // to 0.04824744932477: 14 400 doubles
   for (const scan_result& r :
-       {scan_heights(1.002, band_from, 100, 144, policy<>()),
-        scan_heights(1.002, band_from, 100, 144, policy<domain_error<ignore_error>>())}) {
+       {scan_heights(1.002, {band_from, 100, 144}, policy<>()),
+        scan_heights(1.002, {band_from, 100, 144}, policy<domain_error<ignore_error>>())}) {
     EXPECT_EQ(r.thrown, 0);
     EXPECT_EQ(r.tipped, 0);
     EXPECT_LT(r.jump, 1e-9);
@@ -204,7 +210,7 @@ TEST(TiltedCylinder, RegressionNoExceptionJustPastLiftOff) {
   for (const double eps : {0.3, 1.5, 100.0}) {
     double from = lift_off_height(eps);
     for (int i = 0; i < 40; ++i) from = std::nextafter(from, 0.0);
-    const scan_result r = scan_heights(eps, from, 80, 1, policy<>());
+    const scan_result r = scan_heights(eps, {from, 80, 1}, policy<>());
     EXPECT_EQ(r.thrown, 0) << eps;
     EXPECT_EQ(r.tipped, 0) << eps;
     EXPECT_LT(r.jump, 1e-9) << eps;

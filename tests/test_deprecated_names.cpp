@@ -143,3 +143,27 @@ TEST(DeprecatedNames, MakeHelpersBuildWhatDeductionBuilds) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 28: the 3-D contact law takes its normal as contact_normal{n}; the
+// old call with three plain vectors in a row gives the same friction.
+TEST(DeprecatedNames, ContactLawWithAPlainNormalIsTheNamedOverload) {
+  using namespace spinslide;
+  using vec3 = std::array<double, 3>;
+  const contact_law<hertz<>> law(hertz<>(), velocity_scale<double>{1e-3});
+  const force_contact<double> c{patch_radius<double>{0.01}, normal_force<double>{10.0},
+                                friction_coefficient<double>{0.3}};
+  const vec3 n{0.6, 0.0, 0.8};
+  for (const double v : {0.0, 1e-4, 0.05, 2.0}) {
+    const vec3 vel{v, 0.2 * v, -0.1}, w{0.0, 1.0, 2.0};
+    const auto old_call = law(vel, w, n, c);
+    const auto new_call = law(vel, w, contact_normal{n}, c);
+    for (std::size_t i = 0; i < 3; ++i) {
+      EXPECT_EQ(old_call.force[i], new_call.force[i]);
+      EXPECT_EQ(old_call.torque[i], new_call.torque[i]);
+    }
+  }
+}
+
+}  // namespace

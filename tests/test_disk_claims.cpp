@@ -20,6 +20,7 @@
 #include <cerrno>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -346,33 +347,29 @@ void assert_finite_and_in_range(const Real& e, const std::vector<Real>& v) {
   ASSERT_LE(v[1], Real(2) / 3);
 }
 
-// The leading terms 𝓕, 𝓣, 𝓕′ at e (see sweep_extremes); false where e is
+// The leading terms 𝓕, 𝓣, 𝓕′ at e (see sweep_extremes); none where e is
 // neither small nor large enough for them.
+struct leading {
+  mp force, torque, slope;
+};
+
 template <class Real>
-bool leading_terms(const Real& e, mp& F, mp& T, mp& dF) {
+std::optional<leading> leading_terms(const Real& e) {
   using lim = std::numeric_limits<Real>;
   using std::sqrt;
   const Real root = sqrt(lim::epsilon());
   const mp E(e);
-  if (e <= root / 4) {
-    F = E * (1 - E * E / 8);
-    T = mp(2) / 3 - E * E / 2;
-    dF = 1 - 3 * E * E / 8;
-    return true;
-  }
-  if (e >= 4 / root) {
-    F = 1 - 1 / (8 * E * E);
-    T = (1 + 1 / (12 * E * E)) / (4 * E);
-    dF = 1 / (4 * E * E * E);
-    return true;
-  }
-  return false;
+  if (e <= root / 4) return leading{E * (1 - E * E / 8), mp(2) / 3 - E * E / 2, 1 - 3 * E * E / 8};
+  if (e >= 4 / root)
+    return leading{1 - 1 / (8 * E * E), (1 + 1 / (12 * E * E)) / (4 * E), 1 / (4 * E * E * E)};
+  return std::nullopt;
 }
 
 template <class Real>
 void expect_leading_terms(const Real& e, const std::vector<Real>& v) {
-  mp F, T, dF;
-  if (!leading_terms(e, F, T, dF)) return;
+  const std::optional<leading> terms = leading_terms(e);
+  if (!terms) return;
+  const mp &F = terms->force, &T = terms->torque, &dF = terms->slope;
   const mp E(e);
   EXPECT_TRUE(close_to(v[0], F)) << "force at " << e;
   EXPECT_TRUE(close_to(v[1], T)) << "torque at " << e;

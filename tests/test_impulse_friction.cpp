@@ -50,12 +50,13 @@ struct stepped_throw {
   double drift = 0;       // the distance moved in 1000 steps after it
 };
 
-stepped_throw step_throw(double gamma, double v0, double w0, double dt, double probe) {
+// From the start (v0, ω0) with steps of dt; `probe` is the time at which ε is read.
+stepped_throw step_throw(double gamma, const vec2& start, double dt, double probe) {
   const uniform_disk<> disk;
   const planar_metric<double> inverse_mass(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1 / gamma}}});
   stepped_throw out;
-  vec2 v{v0, 0};
-  double w = w0, t = 0, last = 0;
+  vec2 v{start[0], 0};
+  double w = start[1], t = 0, last = 0;
   const auto c = contact(1, dt, 1);
   bool stopped = false;
   for (long k = 0; k < 100000000 && !stopped; ++k) {
@@ -96,7 +97,7 @@ TEST(ImpulseFriction, ThrowConvergesToTheExactStopAsTheStepShrinks) {
     for (double steps : {100.0, 1000.0, 10000.0}) {
       const double dt = exact.time / steps;
       // The ratio where the motion is nearly spent (ε near ε₀), at 0.95 t*.
-      const stepped_throw s = step_throw(gamma, start[0], start[1], dt, 0.95 * exact.time);
+      const stepped_throw s = step_throw(gamma, start, dt, 0.95 * exact.time);
       const std::vector<double> at{s.probe_time};
       const double ratio = trajectory(disk, gamma, start[0], start[1], at).at(0).ratio;
       ratio_errors.push_back(std::fabs(s.probe_ratio / ratio - 1));

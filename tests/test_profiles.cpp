@@ -121,18 +121,19 @@ void expect_moments(const P& p, const spinslide_test::load_moments& m, const cha
 // (∫₀¹ 2r^(k+1) dr; ∫₀^(π/2) of powers of sin and cos).
 TEST(ProfileMoments, QuadratureReferenceHasTheExactValues) {
   const long double pi_l = boost::math::constants::pi<long double>();
-  auto expect = [](const spinslide_test::load_moments& m, long double r, long double inv,
-                   long double sq, const char* name) {
+  using spinslide_test::load_moments;
+  auto expect = [](const load_moments& m, const load_moments& exact, const char* name) {
     // In long double (EXPECT_NEAR would compare doubles): 1e-18 is ~10 ulp.
-    EXPECT_LE(std::fabs(m.mean_radius - r), 1e-18L) << name;
-    EXPECT_LE(std::fabs(m.mean_inverse_radius - inv), 1e-18L) << name;
-    EXPECT_LE(std::fabs(m.mean_square_radius - sq), 1e-18L) << name;
+    EXPECT_LE(std::fabs(m.mean_radius - exact.mean_radius), 1e-18L) << name;
+    EXPECT_LE(std::fabs(m.mean_inverse_radius - exact.mean_inverse_radius), 1e-18L) << name;
+    EXPECT_LE(std::fabs(m.mean_square_radius - exact.mean_square_radius), 1e-18L) << name;
   };
-  expect(spinslide_test::uniform_disk_moments(), 2.0L / 3, 2, 0.5L, "uniform");
-  expect(spinslide_test::hertz_moments(), 3 * pi_l / 16, 3 * pi_l / 4, 0.4L, "hertz");
-  expect(spinslide_test::boussinesq_moments(), pi_l / 4, pi_l / 2, 2.0L / 3, "boussinesq");
+  // {⟨r⟩, ⟨1/r⟩, ⟨r²⟩}
+  expect(spinslide_test::uniform_disk_moments(), {2.0L / 3, 2, 0.5L}, "uniform");
+  expect(spinslide_test::hertz_moments(), {3 * pi_l / 16, 3 * pi_l / 4, 0.4L}, "hertz");
+  expect(spinslide_test::boussinesq_moments(), {pi_l / 4, pi_l / 2, 2.0L / 3}, "boussinesq");
   // An annulus with no hole is the disk.
-  expect(spinslide_test::annulus_moments(0), 2.0L / 3, 2, 0.5L, "annulus(0)");
+  expect(spinslide_test::annulus_moments(0), {2.0L / 3, 2, 0.5L}, "annulus(0)");
 }
 
 TEST(ProfileMoments, ClosedFormsAndQuadratureAgree) {

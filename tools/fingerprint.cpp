@@ -147,8 +147,9 @@ int main() {
   const contact_law<hertz<>> law(hertz<>(), velocity_scale<double>{1e-3});
   for (double v : {0.0, 1e-5, 0.01, 1.0}) {
     const auto f2 = law(std::array<double, 2>{v, -0.5 * v}, 3.0, contact_of(0.01, 10.0, 0.3));
-    const auto f3 = law(std::array<double, 3>{v, 0.2, 0.1}, std::array<double, 3>{0.0, 1.0, 2.0},
-                        std::array<double, 3>{0.0, 0.0, 1.0}, contact_of(0.01, 10.0, 0.3));
+    const auto f3 =
+        law(std::array<double, 3>{v, 0.2, 0.1}, std::array<double, 3>{0.0, 1.0, 2.0},
+            contact_normal{std::array<double, 3>{0.0, 0.0, 1.0}}, contact_of(0.01, 10.0, 0.3));
     std::printf("contact %a %a %a | %a %a %a %a %a %a\n", f2.force[0], f2.force[1], f2.torque,
                 f3.force[0], f3.force[1], f3.force[2], f3.torque[0], f3.torque[1], f3.torque[2]);
   }

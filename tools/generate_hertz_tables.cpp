@@ -156,7 +156,7 @@ void measure(const std::vector<double>& table, int pieces, int degree, report& r
       const double ratio = static_cast<double>(1 / sqrt(zm));
       if (zm <= 0 || ratio < 1.3) continue;
       const auto got = spinslide::detail::hertz_fast_evaluate<true, true, true>(
-          table.data(), pieces, degree, ratio);
+          {table.data(), pieces, degree}, ratio);
       const auto exact = closed_forms(mp(ratio));
       const double g[4] = {got.force, got.torque, got.slope, got.curvature};
       for (std::size_t f = 0; f < 4; ++f)

@@ -144,15 +144,16 @@ class contact_law {
   /// patch centre (wrench_about moves it to any point).
   template <class Vec3>
   spatial_friction<Vec3> operator()(const Vec3& velocity, const Vec3& angular_velocity,
-                                    const Vec3& normal, const force_contact<Real>& contact) const {
+                                    const contact_normal<Vec3>& normal,
+                                    const force_contact<Real>& contact) const {
     static_assert(
         detail::is_vector<Vec3, 3>(),
         "spinslide::contact_law: the velocity, angular velocity and normal must be "
         "3-component vector classes (operator[] or members x, y, z), not pointers or "
         "C arrays: copy a raw array such as MuJoCo's mjtNum* into a std::array<double, 3>");
-    const Real n[3] = {static_cast<Real>(detail::get<0>(normal)),
-                       static_cast<Real>(detail::get<1>(normal)),
-                       static_cast<Real>(detail::get<2>(normal))};
+    const Real n[3] = {static_cast<Real>(detail::get<0>(normal.value)),
+                       static_cast<Real>(detail::get<1>(normal.value)),
+                       static_cast<Real>(detail::get<2>(normal.value))};
     const Real w = detail::vector_dot({static_cast<Real>(detail::get<0>(angular_velocity)),
                                        static_cast<Real>(detail::get<1>(angular_velocity)),
                                        static_cast<Real>(detail::get<2>(angular_velocity))},
@@ -177,6 +178,17 @@ class contact_law {
     detail::set<1>(out.torque, along(n[1]));
     detail::set<2>(out.torque, along(n[2]));
     return out;
+  }
+
+  /// The 3-D contact with the normal as a plain vector: three vectors of one
+  /// type in a row, which a call can swap unnoticed.  Deprecated since issue
+  /// 28; wrap the normal: law(v, w, contact_normal{n}, contact).
+  template <class Vec3, class Normal>
+  [[deprecated(
+      "spinslide: pass the normal as contact_normal{n} (issue 28)")]] spatial_friction<Vec3>
+  operator()(const Vec3& velocity, const Vec3& angular_velocity, const Normal& normal,
+             const force_contact<Real>& contact) const {
+    return (*this)(velocity, angular_velocity, contact_normal<Vec3>(normal), contact);
   }
 
  private:

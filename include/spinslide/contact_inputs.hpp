@@ -4,7 +4,8 @@
 //
 /// \file contact_inputs.hpp
 /// Named inputs of the contact laws: the patch radius, the normal load, the
-/// friction coefficient and the springs' stiffnesses each have their own type, so that a call
+/// friction coefficient, the springs' stiffnesses and the 3-D contact normal
+/// each have their own type, so that a call
 /// cannot swap them (a radius where a force goes does not compile) and reads plainly:
 ///
 ///     spinslide::impulse_contact<double> c{spinslide::patch_radius<double>{0.06},
@@ -78,6 +79,17 @@ struct friction_coefficient {
   /// even by brace elision inside impulse_contact.
   explicit constexpr friction_coefficient(Real v) : value(v) {}
   Real value;  ///< μ
+};
+
+/// The unit contact normal n of the 3-D contact law: a 3-component vector
+/// class (operator[] or members x, y, z), of length 1 (the law does not
+/// normalize it).  Its own type, so that a call cannot pass the normal where
+/// a velocity goes: law(v, w, contact_normal{n}, contact).
+template <class Vec3>
+struct contact_normal {
+  /// Explicit: a plain vector does not convert.
+  explicit constexpr contact_normal(const Vec3& v) : value(v) {}
+  Vec3 value;  ///< n
 };
 
 /// One contact over one time step, for the impulse law (impulse_friction.hpp).

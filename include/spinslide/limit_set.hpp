@@ -48,14 +48,15 @@ constexpr void require_projectable() {
 }
 
 template <class Profile, class Real>
-limit_projection<Real> project_checked(const Profile& profile, Real force, Real torque,
-                                       Real torque_weight, Real start, const char* function,
+limit_projection<Real> project_checked(const Profile& profile,
+                                       const force_torque_result<Real>& point, Real torque_weight,
+                                       Real start, const char* function,
                                        const curve_point<Real>* from = nullptr) {
   require_projectable<Profile, Real>();
   using Policy = typename Profile::policy_type;
   const Policy pol;
-  const Real f = checked(function, "force", force, argument_rule::finite_non_negative, pol);
-  const Real t = checked(function, "torque", torque, argument_rule::finite_non_negative, pol);
+  const Real f = checked(function, "force", point.force, argument_rule::finite_non_negative, pol);
+  const Real t = checked(function, "torque", point.torque, argument_rule::finite_non_negative, pol);
   const Real w =
       checked(function, "torque_weight", torque_weight, argument_rule::finite_positive, pol);
   const Real s = checked(function, "start.ratio", start, argument_rule::non_negative, pol);
@@ -63,7 +64,7 @@ limit_projection<Real> project_checked(const Profile& profile, Real force, Real 
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     return {nan, nan, false, nan};
   }
-  return limit_projector<Profile>(profile, f, t, w)(s, from);
+  return limit_projector<Profile>(profile, {f, t}, w)(s, from);
 }
 
 // What the 3-D projection requires besides: a limit curve without corners
@@ -117,7 +118,7 @@ wrench_projection<Real> project_wrench_checked(const Profile& profile,
 template <class Profile, class Real>
 limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, Real torque,
                                             Real torque_weight) {
-  return detail::project_checked(profile, force, torque, torque_weight, Real(0),
+  return detail::project_checked(profile, {force, torque}, torque_weight, Real(0),
                                  "spinslide::project_to_limit_set<%1%>(profile, %1%, %1%, %1%)");
 }
 
@@ -135,7 +136,7 @@ limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, 
                                             Real torque_weight, const curve_point<Real>& start) {
   // (A point without values is a ratio alone: no first step from it.)
   return detail::project_checked(
-      profile, force, torque, torque_weight, start.ratio,
+      profile, {force, torque}, torque_weight, start.ratio,
       "spinslide::project_to_limit_set<%1%>(profile, %1%, %1%, %1%, curve_point)",
       (boost::math::isnan)(start.force) ? nullptr : &start);
 }

@@ -147,8 +147,8 @@ capped_friction<Vec, typename Profile::value_type> cap_checked(
       if (any_reported(weight)) return reported(weight);
     }
     const bool from_point = start.ratio > 0 && (isfinite)(start.force);
-    cap =
-        limit_projector<Profile>(profile, x, y, weight)(start.ratio, from_point ? &start : nullptr);
+    cap = limit_projector<Profile>(profile, {x, y}, weight)(start.ratio,
+                                                            from_point ? &start : nullptr);
   }
   out.sticking = cap.sticking;
   out.ratio = cap.ratio;

@@ -24,7 +24,7 @@ int main() {
   const std::array<double, 3> v3{qvel[0], qvel[1], qvel[2]}, w3{qvel[3], qvel[4], qvel[5]},
       n{0, 0, 1};
   const auto planar = law(v, qvel[5], c);
-  const auto spatial = law(v3, w3, n, c);
+  const auto spatial = law(v3, w3, contact_normal{n}, c);
   return planar.force[0] < 0 && spatial.force[0] < 0 ? 0 : 1;
 #elif MISUSE == 1
   // A raw pointer for the planar velocity.
@@ -35,7 +35,7 @@ int main() {
   const mjtNum* v = qvel;
   const mjtNum* w = qvel + 3;
   const mjtNum* n = qvel;
-  return law(v, w, n, c).force != nullptr ? 0 : 1;
+  return law(v, w, contact_normal{n}, c).force != nullptr ? 0 : 1;
 #elif MISUSE == 3
   // A C array: its size is not the law's to guess, and it cannot be returned.
   const double v[2] = {0.3, 0.1};

@@ -319,14 +319,13 @@ struct stop_errors {
   int moved_again = 0;           // throws that moved again after coming to rest
 };
 
-// Random throws of the steel coin (v0* in [0.1, 2.1], ω0* in [0.1, 3.1])
-// stepped at `dt` with the plug-in, against the exact stop of the same throw
-// (simulate_throw's t*, the uniform disk at γ = 1/2): "at rest" is both
-// the horizontal speed and R|ω| below 1e-6 of their starts.
-stop_errors coin_stops(double dt, int throws, unsigned seed) {
+// Random throws of the steel coin (v0* in [0.1, 2.1], ω0* in [0.1, 3.1],
+// drawn from `rng`) stepped at `dt` with the plug-in, against the exact stop
+// of the same throw (simulate_throw's t*, the uniform disk at γ = 1/2): "at
+// rest" is both the horizontal speed and R|ω| below 1e-6 of their starts.
+stop_errors coin_stops(double dt, int throws, std::mt19937_64 rng) {
   const double thickness = 2 * coin_half_thickness;
   const double mass = 7850 * pi * coin_radius * coin_radius * thickness;
-  std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
   stop_errors out;
   for (int k = 0; k < throws; ++k) {
@@ -383,12 +382,12 @@ double median(const std::vector<double>& sorted) { return sorted[sorted.size() /
 // 2 mm coin (also with Bullet's own friction); at 1e-3 s and 1/240 s that
 // loss of support makes the stops late by half or more (not held here).
 TEST(BulletAdapter, RegressionCoinStopsMatchTheExactOnes) {
-  const stop_errors fine = coin_stops(1e-5, 40, 27);
+  const stop_errors fine = coin_stops(1e-5, 40, std::mt19937_64(27));
   ASSERT_EQ(fine.never, 0);
   EXPECT_EQ(fine.moved_again, 0);
   EXPECT_GT(fine.relative.front(), -1e-3);
   EXPECT_LT(fine.relative.back(), 1e-3);
-  const stop_errors coarse = coin_stops(1e-4, 200, 28);
+  const stop_errors coarse = coin_stops(1e-4, 200, std::mt19937_64(28));
   for (const auto* e : {&fine, &coarse})
     std::printf(
         "coin stops: %zu throws, error %+.4f %% (first) %+.4f %% (median) %+.4f %% (last), "

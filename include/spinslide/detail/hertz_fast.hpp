@@ -36,23 +36,30 @@ struct hertz_fast_values {
 // The first ratio the table serves: 13/10, z = 100/169.
 inline constexpr double hertz_fast_start() { return 1.3; }
 
-// Evaluation of a table of `pieces` pieces of degree `degree` at ε ≥ 13/10
-// (also +∞): 𝓕 and 𝓣 if Values, 𝓕′ if Slope, 𝓕″ if Curvature (each 0
-// otherwise).  The library calls it
-// with its own table and layout (constants: the loops unroll); the generator
-// with a table it is building.  Piece i covers z·P/Z ∈ [i, i + 1); z = Z
-// itself falls into the last piece.
+// A table of `pieces` pieces, each of degree `degree`, its coefficients
+// laid out as hertz_table_layout says.
+struct hertz_table_view {
+  const double* coefficients;
+  int pieces;
+  int degree;
+};
+
+// Evaluation of a table at ε ≥ 13/10 (also +∞): 𝓕 and 𝓣 if Values, 𝓕′ if
+// Slope, 𝓕″ if Curvature (each 0 otherwise).  The library calls it with its
+// own table and layout (constants: the loops unroll); the generator with a
+// table it is building.  Piece i covers z·P/Z ∈ [i, i + 1); z = Z itself
+// falls into the last piece.
 template <bool Values, bool Slope, bool Curvature>
-inline hertz_fast_values hertz_fast_evaluate(const double* table, int pieces, int degree,
-                                             double eps) {
+inline hertz_fast_values hertz_fast_evaluate(hertz_table_view table, double eps) {
+  const int pieces = table.pieces;
   const double k = 1 / eps, z = k * k;
   // P/Z and 2P/Z: x = z·2P/Z − (2i + 1) ∈ [−1, 1] on piece i.
   const double index_scale = 1.69 * pieces;
   std::ptrdiff_t i = static_cast<std::ptrdiff_t>(z * index_scale);
   i = i < pieces - 1 ? i : pieces - 1;
   const double x = z * (2 * index_scale) - static_cast<double>(2 * i + 1);
-  const std::ptrdiff_t n = degree;
-  const double* c = table + i * hertz_table_layout::functions * (n + 1);
+  const std::ptrdiff_t n = table.degree;
+  const double* c = table.coefficients + i * hertz_table_layout::functions * (n + 1);
   // Horner's rule for each function, the chains independent (their
   // latencies overlap).
   double a1 = 0, a2 = 0, a3 = 0, a4 = 0;
@@ -71,8 +78,8 @@ inline hertz_fast_values hertz_fast_evaluate(const double* table, int pieces, in
 // The library's fast path, on its committed table.
 template <bool Values, bool Slope, bool Curvature>
 inline hertz_fast_values hertz_fast(double eps) {
-  return hertz_fast_evaluate<Values, Slope, Curvature>(hertz_table, hertz_table_layout::pieces,
-                                                       hertz_table_layout::degree, eps);
+  return hertz_fast_evaluate<Values, Slope, Curvature>(
+      {hertz_table, hertz_table_layout::pieces, hertz_table_layout::degree}, eps);
 }
 
 }  // namespace detail

@@ -67,9 +67,14 @@ class limit_projector {
   using Real = typename Profile::value_type;
 
  public:
-  // x, y ≥ 0 and w > 0, finite (checked by the caller).
-  limit_projector(const Profile& profile, Real x, Real y, Real w)
-      : profile_(profile), x_(x), y_(y), w_(w), top_(profile.mean_radius()) {}
+  // The point (x, y) = (point.force, point.torque) ≥ 0 and the weight w =
+  // torque_weight > 0, finite (checked by the caller).
+  limit_projector(const Profile& profile, force_torque_result<Real> point, Real torque_weight)
+      : profile_(profile),
+        x_(point.force),
+        y_(point.torque),
+        w_(torque_weight),
+        top_(profile.mean_radius()) {}
 
   // The projection, searching from `start` (a ratio; 0 or ∞: no guess), or
   // from the curve point `from` (at the ratio `start`) if given.

@@ -100,7 +100,7 @@ class metric_projector {
     // Otherwise the 2-D projection decides sticking on the magnitudes and
     // gives the curve point, along z's direction, to start from.
     const limit_projection<Real> flat =
-        limit_projector<Profile>(p_, length(z_[0], z_[1]), fabs(z_[2]), torque_weight())(start);
+        limit_projector<Profile>(p_, {length(z_[0], z_[1]), fabs(z_[2])}, torque_weight())(start);
     if (flat.sticking) return {{z_[0], z_[1], z_[2]}, true, std::numeric_limits<Real>::quiet_NaN()};
     const ray r = normal_ray(flat.ratio, {flat.force, flat.torque});
     if (r.resolved) {
