@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <tuple>
 #include <type_traits>
@@ -280,6 +281,34 @@ class scaled : public profile_base<scaled<Profile>, typename Profile::value_type
   Real a_;
 };
 
+namespace detail {
+
+/// Load fractions: checks `weights` (each finite and ≥ 0, the largest > 0;
+/// otherwise std::domain_error naming `function`) and scales them in place
+/// to sum 1.  Shared by weighted_sum and sums built at run time (the Python
+/// package's WeightedSum).
+template <class Policy, class Range>
+void normalise_weights(Range& weights, const char* function) {
+  using Real = std::decay_t<decltype(*std::begin(weights))>;
+  Real largest = 0;
+  for (Real& x : weights) {
+    x = checked_constructor_argument<Policy>(function, "a weight", x,
+                                             argument_rule::finite_non_negative);
+    if (x > largest) largest = x;
+  }
+  largest = checked_constructor_argument<Policy>(function, "the largest weight", largest,
+                                                 argument_rule::finite_positive);
+  // Divided by the largest first, so that the sum cannot overflow.
+  Real total = 0;
+  for (Real& x : weights) {
+    x /= largest;
+    total += x;
+  }
+  for (Real& x : weights) x /= total;
+}
+
+}  // namespace detail
+
 /// A load-weighted sum of profiles: fraction w_i of the load is distributed
 /// as profile i.  The weights are normalised; each must be ≥ 0 and finite and
 /// their sum > 0.  Example, a two-tier disk carrying 60% of the load on
@@ -356,23 +385,8 @@ class weighted_sum
     return w;
   }
   static std::array<Real, size> normalised(std::array<Real, size> w) {
-    static const char* function = "spinslide::weighted_sum<%1%>::weighted_sum(weights, parts...)";
-    using detail::argument_rule;
-    Real largest = 0;
-    for (Real& x : w) {
-      x = detail::checked_constructor_argument<Policy>(function, "a weight", x,
-                                                       argument_rule::finite_non_negative);
-      if (x > largest) largest = x;
-    }
-    largest = detail::checked_constructor_argument<Policy>(function, "the largest weight", largest,
-                                                           argument_rule::finite_positive);
-    // Divided by the largest first, so that the sum cannot overflow.
-    Real total = 0;
-    for (Real& x : w) {
-      x /= largest;
-      total += x;
-    }
-    for (Real& x : w) x /= total;
+    detail::normalise_weights<Policy>(
+        w, "spinslide::weighted_sum<%1%>::weighted_sum(weights, parts...)");
     return w;
   }
   template <class F>

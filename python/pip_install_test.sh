@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# CTest python_pip_install (python/CMakeLists.txt): the README's install, as a
+# user runs it, into a fresh virtual environment, offline, then the pytest
+# suite against the installed package (not the build tree's copy).
+#   pip_install_test.sh PYTHON SOURCE_DIR WORK_DIR
+# The sources are copied first (only what the package needs: pip builds in
+# place, and its build/ and *.egg-info stay out of the source tree).
+set -euo pipefail
+python=$1 source=$2 work=$3
+rm -rf "$work"
+mkdir -p "$work/src"
+cd "$source"
+cp -r pyproject.toml setup.py LICENSE include python "$work/src/"
+mkdir -p "$work/src/docs" && cp docs/python.md "$work/src/docs/"
+"$python" -m venv --system-site-packages "$work/venv"
+"$work/venv/bin/pip" install --no-build-isolation --no-index --quiet "$work/src"
+cd "$work"  # not the source tree: the installed package is imported
+"$work/venv/bin/python" -c 'import spinslide, sys; print("installed:", spinslide.__file__, spinslide.__version__)'
+SPINSLIDE_SOURCE_DIR="$source" "$work/venv/bin/python" -m pytest -q -p no:cacheprovider "$source/python/tests"

@@ -1,0 +1,216 @@
+#  Copyright (c) 2026 the spinslide developers.
+#  Distributed under the Boost Software License, Version 1.0.
+#  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+"""Coupled sliding and spinning friction (Coulomb-Contensou friction), exact.
+
+A flat contact that slides with speed v and spins with angular velocity w feels
+a friction force F = mu N F(eps) and a friction torque T = mu N a T(eps) that
+depend on each other through one number, the ratio eps = v/(a w) (Farkas,
+Bartels, Unger and Wolf, 2003).  This package computes them for any
+axisymmetric pressure distribution, to a few ulp, and the dynamics they imply:
+a sliding, spinning disk stops both motions at the same moment.
+
+    >>> import spinslide
+    >>> F, T = spinslide.force_torque([0.1, 1.0, 10.0])   # the paper's disk
+    >>> spinslide.terminal_ratio()                          # eps_0 ~ 0.653
+    >>> spinslide.simulate_throw(spinslide.Hertz(), 0.4, v0=1.0, omega0=2.0).time
+
+Built from the C++ headers of the same version (docs/python.md).
+"""
+
+import sys as _sys
+import time as _time
+
+import numpy as _np
+
+from ._core import (  # noqa: F401  (re-exported)
+    Annulus,
+    Boussinesq,
+    Hertz,
+    Profile,
+    RadialProfile,
+    RatioFlowZero,
+    Ring,
+    Scaled,
+    StopResult,
+    Tabulated,
+    TerminalRegime,
+    TerminalState,
+    UniformDisk,
+    WeightedSum,
+    force,
+    force_at_torque,
+    force_derivative,
+    force_torque,
+    ratio_at_force,
+    ratio_at_torque,
+    ratio_flow_zeros,
+    simulate_throw,
+    simulate_throw_si,
+    terminal_motion,
+    terminal_ratio,
+    terminal_window,
+    torque,
+    torque_at_force,
+    torque_derivative,
+    trajectory,
+)
+from . import _core
+
+__version__ = "1.0.0"
+
+__all__ = [
+    "Annulus", "Boussinesq", "Hertz", "Profile", "RadialProfile", "RatioFlowZero", "Ring", "Scaled",
+    "StopResult", "Tabulated", "TerminalRegime", "TerminalState", "UniformDisk", "WeightedSum",
+    "force", "torque", "force_torque", "force_derivative", "torque_derivative",
+    "torque_at_force", "ratio_at_force", "force_at_torque", "ratio_at_torque", "coupling_curve",
+    "terminal_ratio", "terminal_motion", "terminal_window", "ratio_flow_zeros",
+    "simulate_throw", "simulate_throw_si", "trajectory", "stop_results", "StopResults",
+    "project_to_limit_set", "LimitProjection", "impulse_friction", "spring_history_friction",
+    "FrictionResult",
+]
+
+
+class _Arrays:
+    """Named arrays (a result of a vectorized call)."""
+
+    _fields = ()
+
+    def __init__(self, values):
+        for name in self._fields:
+            setattr(self, name, values[name])
+
+    def __repr__(self):
+        inner = ", ".join(f"{name}={getattr(self, name)!r}" for name in self._fields)
+        return f"{type(self).__name__}({inner})"
+
+
+class StopResults(_Arrays):
+    """The stops of many throws: arrays of the broadcast shape of v0 and omega0.
+
+    time, distance, angle: dimensionless stop time t*, distance s* and angle;
+    terminal_ratio: the limit of eps at each stop (eps_0, inf or 0).
+    """
+
+    _fields = ("time", "distance", "angle", "terminal_ratio")
+
+
+class LimitProjection(_Arrays):
+    """The nearest points of the limit set: force, torque (the point), sticking
+    (True where the input was inside, unchanged) and ratio (eps of the curve
+    point, NaN where sticking)."""
+
+    _fields = ("force", "torque", "sticking", "ratio")
+
+
+class FrictionResult(_Arrays):
+    """One step of a contact law for an array of contacts: force (..., 2), torque,
+    sticking, ratio (eps of the slip, NaN where sticking); for the spring law
+    also the springs' new state: displacement (..., 2), twist and curve_ratio
+    (pass them to the next step)."""
+
+    _fields = ("force", "torque", "sticking", "ratio")
+
+
+class _SpringResult(FrictionResult):
+    _fields = FrictionResult._fields + ("displacement", "twist", "curve_ratio")
+
+
+def coupling_curve(profile, points=257):
+    """The coupled limit curve (F(eps), T(eps)) of `profile` from pure spinning
+    (0, <r>) to pure sliding (1, 0): two arrays of `points` points (>= 3), eps
+    spread evenly in eps/(1 + eps) so that both ends are resolved."""
+    points = int(points)
+    if points < 3:
+        raise ValueError("spinslide.coupling_curve: points must be at least 3")
+    t = _np.linspace(0.0, 1.0, points)
+    with _np.errstate(divide="ignore"):
+        eps = _np.where(t < 1.0, t / _np.maximum(1.0 - t, 0.0), _np.inf)
+    return profile.force_torque(eps)
+
+
+class _ProgressBar:
+    """A progress bar on a terminal (stderr), or a line every 10 % elsewhere."""
+
+    def __init__(self, stream=None):
+        self.stream = stream if stream is not None else _sys.stderr
+        self.tty = hasattr(self.stream, "isatty") and self.stream.isatty()
+        self.start = _time.monotonic()
+        self.last_tenth = -1
+
+    def __call__(self, done, total):
+        fraction = done / total if total else 1.0
+        elapsed = _time.monotonic() - self.start
+        rate = done / elapsed if elapsed > 0 else 0.0
+        left = (total - done) / rate if rate > 0 else float("nan")
+        if self.tty:
+            width = 30
+            filled = int(width * fraction)
+            self.stream.write(
+                f"\rthrows {done}/{total} [{'#' * filled}{'.' * (width - filled)}] "
+                f"{100 * fraction:5.1f} %  {rate:,.0f}/s  {left:5.1f} s left ")
+            if done == total:
+                self.stream.write("\n")
+        elif int(10 * fraction) > self.last_tenth:
+            self.last_tenth = int(10 * fraction)
+            self.stream.write(f"throws {done}/{total} ({100 * fraction:.0f} %)\n")
+        self.stream.flush()
+
+
+def stop_results(profile, inertia_ratio, v0, omega0, threads=0, progress=False):
+    """The stops of many throws on all cores (the GIL released).
+
+    v0, omega0: the dimensionless starts (array-likes, broadcast together; each
+    >= 0).  threads: worker threads, 0 for all cores.  progress: True for a
+    progress bar on stderr (a line every 10 % when stderr is not a terminal),
+    or a callable progress(done, total), called about every 0.1 s.  Ctrl-C
+    stops the batch.  Each result equals simulate_throw's for the same start,
+    bit for bit, whatever the number of threads.  Returns StopResults.
+    """
+    if int(threads) < 0:
+        raise ValueError("spinslide.stop_results: threads must be >= 0 (0: all cores)")
+    callback = _ProgressBar() if progress is True else (progress or None)
+    return StopResults(_core._stop_results(profile, inertia_ratio, v0, omega0, int(threads),
+                                           callback))
+
+
+def project_to_limit_set(profile, force, torque, torque_weight):
+    """The point of the profile's limit set L nearest to (force, torque) in
+    (f - force)^2 + torque_weight (t - torque)^2, for forces in units of mu N and
+    torques in units of mu N a (each >= 0, torque_weight > 0; array-likes,
+    broadcast).  Inside L the point sticks (unchanged); outside it lands on the
+    curve at ratio eps (inf at (1, 0), 0 at (0, <r>)).  Returns LimitProjection."""
+    return LimitProjection(_core._project_to_limit_set(profile, force, torque, torque_weight))
+
+
+def impulse_friction(profile, velocity, spin, inverse_mass, radius, normal_impulse,
+                     friction_coefficient, start_ratio=0.0):
+    """The friction impulse of one step for one contact or an array of contacts.
+
+    velocity (..., 2): the relative sliding velocity before friction in the
+    tangent plane; spin (...): the relative angular velocity about the normal;
+    inverse_mass (..., 3, 3): the contact's inverse mass over (v_x, v_y, w);
+    radius: the patch radius a >= 0; normal_impulse: the step's normal impulse
+    >= 0; friction_coefficient: mu >= 0; start_ratio: the last step's ratio
+    (0: none), which only speeds the search.  All broadcast together.
+    Returns FrictionResult: force is the impulse (P_x, P_y), torque the angular
+    impulse L; the exact stick or slip of the coupled law."""
+    return FrictionResult(_core._impulse_friction(profile, velocity, spin, inverse_mass, radius,
+                                                  normal_impulse, friction_coefficient,
+                                                  start_ratio))
+
+
+def spring_history_friction(profile, displacement, twist, displacement_increment,
+                            twist_increment, tangential_stiffness, twisting_stiffness, radius,
+                            normal_force, friction_coefficient, curve_ratio=0.0):
+    """One step of the spring-history (DEM) law for one or many contacts.
+
+    displacement (..., 2), twist, curve_ratio: the springs' state from the last
+    step (zeros and 0 at first contact); displacement_increment (..., 2) and
+    twist_increment: this step's relative tangential displacement and rotation;
+    the stiffnesses k_t and k_theta (> 0), the patch radius a > 0, the normal
+    force N >= 0 and mu >= 0.  All broadcast together.  Returns a FrictionResult
+    with the springs' new displacement, twist and curve_ratio."""
+    return _SpringResult(_core._spring_history_friction(
+        profile, displacement, twist, curve_ratio, displacement_increment, twist_increment,
+        tangential_stiffness, twisting_stiffness, radius, normal_force, friction_coefficient))

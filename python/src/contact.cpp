@@ -1,0 +1,246 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+// The contact: the projection onto the coupled limit set, and the impulse
+// and spring-history laws, for one contact or for arrays of contacts (a
+// numpy simulator calls them once per step for all its contacts).
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "profile_handle.hpp"
+
+#include <spinslide/impulse_friction.hpp>
+#include <spinslide/limit_set.hpp>
+#include <spinslide/spring_friction.hpp>
+
+#include <array>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace spinslide_python {
+
+namespace {
+
+using contiguous = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// The inputs broadcast together, each with `trailing` fixed trailing
+// dimensions (2 for a vector, 3×3 for a matrix), as contiguous float64.
+struct broadcast {
+  std::vector<contiguous> arrays;
+  std::vector<py::ssize_t> shape;  // the contacts' shape (without the trailing dimensions)
+  std::size_t count = 1;
+};
+
+broadcast broadcast_inputs(const std::vector<std::pair<py::handle, int>>& inputs,
+                           const std::vector<const char*>& names) {
+  // Each array's leading (contact) dimensions, broadcast together.
+  py::module_ np = py::module_::import("numpy");
+  std::vector<py::array> arrays;
+  py::list leading;
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    py::array a = as_array(inputs[k].first, names[k]);
+    const int trailing = inputs[k].second;
+    if (a.ndim() < trailing)
+      throw py::value_error(std::string(names[k]) + " must have " + std::to_string(trailing) +
+                            " trailing dimension(s) (a vector is (..., 2), a matrix (..., 3, 3))");
+    arrays.push_back(a);
+    py::tuple s(a.ndim() - trailing);
+    for (py::ssize_t i = 0; i < a.ndim() - trailing; ++i) s[i] = a.shape(i);
+    leading.append(s);
+  }
+  const py::tuple shape = np.attr("broadcast_shapes")(*leading);
+  broadcast out;
+  for (const auto& d : shape) out.shape.push_back(d.cast<py::ssize_t>());
+  for (const auto n : out.shape) out.count *= static_cast<std::size_t>(n);
+  for (std::size_t k = 0; k < arrays.size(); ++k) {
+    py::list full(shape);
+    for (py::ssize_t i = arrays[k].ndim() - inputs[k].second; i < arrays[k].ndim(); ++i)
+      full.append(arrays[k].shape(i));
+    out.arrays.push_back(contiguous::ensure(
+        np.attr("ascontiguousarray")(np.attr("broadcast_to")(arrays[k], py::tuple(full)))));
+  }
+  return out;
+}
+
+std::vector<py::ssize_t> with(std::vector<py::ssize_t> shape,
+                              std::initializer_list<py::ssize_t> t) {
+  shape.insert(shape.end(), t);
+  return shape;
+}
+
+// A result array (or a scalar where the contacts' shape is ()).
+py::object finish(py::array a, bool scalar) {
+  if (scalar) return a[py::tuple()];
+  return std::move(a);
+}
+
+// What a projection or a law step returns for each contact: the force (a
+// magnitude, or a 2-vector for the laws), the torque, whether it sticks and
+// the slip's ratio.
+class friction_outputs {
+ public:
+  friction_outputs(const std::vector<py::ssize_t>& shape, bool vector_force)
+      : force_(vector_force ? with(shape, {2}) : shape),
+        torque_(shape),
+        ratio_(shape),
+        sticking_(shape),
+        scalar_(shape.empty()),
+        f_(force_.mutable_data()),
+        t_(torque_.mutable_data()),
+        e_(ratio_.mutable_data()),
+        s_(sticking_.mutable_data()) {}
+
+  // Contact i's result (writes only: safe without the GIL).
+  template <class Result>
+  void set(std::size_t i, const Result& r) {
+    if constexpr (std::is_arithmetic<decltype(r.force)>::value) {
+      f_[i] = r.force;
+    } else {
+      f_[2 * i] = r.force[0];
+      f_[2 * i + 1] = r.force[1];
+    }
+    t_[i] = r.torque;
+    s_[i] = r.sticking;
+    e_[i] = r.ratio;
+  }
+
+  py::dict to_dict() {
+    py::dict out;
+    out["force"] = force_.ndim() > torque_.ndim() ? py::object(force_) : finish(force_, scalar_);
+    out["torque"] = finish(torque_, scalar_);
+    out["sticking"] = finish(sticking_, scalar_);
+    out["ratio"] = finish(ratio_, scalar_);
+    return out;
+  }
+
+ private:
+  py::array_t<double> force_, torque_, ratio_;
+  py::array_t<bool> sticking_;
+  bool scalar_;
+  double *f_, *t_, *e_;
+  bool* s_;
+};
+
+py::dict project(const profile_handle& h, py::handle force, py::handle torque,
+                 py::handle torque_weight) {
+  const broadcast in = broadcast_inputs({{force, 0}, {torque, 0}, {torque_weight, 0}},
+                                        {"force", "torque", "torque_weight"});
+  friction_outputs out(in.shape, false);
+  const double *x = in.arrays[0].data(), *y = in.arrays[1].data(), *w = in.arrays[2].data();
+  {
+    py::gil_scoped_release release;
+    visit(h, [&](const auto& p) {
+      for (std::size_t i = 0; i < in.count; ++i)
+        out.set(i, spinslide::project_to_limit_set(p, x[i], y[i], w[i]));
+    });
+  }
+  return out.to_dict();
+}
+
+py::dict impulse(const profile_handle& h, py::handle velocity, py::handle spin,
+                 py::handle inverse_mass, py::handle radius, py::handle normal_impulse,
+                 py::handle mu, py::handle start) {
+  const broadcast in = broadcast_inputs({{velocity, 1},
+                                         {spin, 0},
+                                         {inverse_mass, 2},
+                                         {radius, 0},
+                                         {normal_impulse, 0},
+                                         {mu, 0},
+                                         {start, 0}},
+                                        {"velocity", "spin", "inverse_mass", "radius",
+                                         "normal_impulse", "friction_coefficient", "start_ratio"});
+  friction_outputs out(in.shape, true);
+  const double *v = in.arrays[0].data(), *w = in.arrays[1].data(), *m = in.arrays[2].data(),
+               *a = in.arrays[3].data(), *n = in.arrays[4].data(), *u = in.arrays[5].data(),
+               *s0 = in.arrays[6].data();
+  {
+    py::gil_scoped_release release;
+    visit(h, [&](const auto& p) {
+      for (std::size_t i = 0; i < in.count; ++i) {
+        const double* mi = m + 9 * i;
+        const spinslide::planar_metric<double> metric(
+            {{{mi[0], mi[1], mi[2]}, {mi[3], mi[4], mi[5]}, {mi[6], mi[7], mi[8]}}});
+        const spinslide::impulse_contact<double> c{spinslide::patch_radius<double>{a[i]},
+                                                   spinslide::normal_impulse<double>{n[i]},
+                                                   spinslide::friction_coefficient<double>{u[i]}};
+        out.set(i,
+                spinslide::impulse_friction(p, std::array<double, 2>{v[2 * i], v[2 * i + 1]}, w[i],
+                                            metric, c, spinslide::curve_point<double>{s0[i]}));
+      }
+    });
+  }
+  return out.to_dict();
+}
+
+py::dict spring(const profile_handle& h, py::handle displacement, py::handle twist,
+                py::handle curve_ratio, py::handle d_displacement, py::handle d_twist,
+                py::handle kt, py::handle kw, py::handle radius, py::handle normal, py::handle mu) {
+  const broadcast in =
+      broadcast_inputs({{displacement, 1},
+                        {twist, 0},
+                        {curve_ratio, 0},
+                        {d_displacement, 1},
+                        {d_twist, 0},
+                        {kt, 0},
+                        {kw, 0},
+                        {radius, 0},
+                        {normal, 0},
+                        {mu, 0}},
+                       {"displacement", "twist", "curve_ratio", "displacement_increment",
+                        "twist_increment", "tangential_stiffness", "twisting_stiffness", "radius",
+                        "normal_force", "friction_coefficient"});
+  friction_outputs out(in.shape, true);
+  py::array_t<double> xi(with(in.shape, {2})), phi(in.shape), ce(in.shape);
+  std::array<const double*, 10> p_in{};
+  for (std::size_t k = 0; k < 10; ++k) p_in[k] = in.arrays[k].data();
+  double *xo = xi.mutable_data(), *po = phi.mutable_data(), *co = ce.mutable_data();
+  {
+    py::gil_scoped_release release;
+    visit(h, [&](const auto& p) {
+      for (std::size_t i = 0; i < in.count; ++i) {
+        spinslide::spring_history<std::array<double, 2>, double> history{
+            {p_in[0][2 * i], p_in[0][2 * i + 1]},
+            p_in[1][i],
+            spinslide::curve_point<double>{p_in[2][i]}};
+        const spinslide::spring_stiffness<double> springs{
+            spinslide::tangential_stiffness<double>{p_in[5][i]},
+            spinslide::twisting_stiffness<double>{p_in[6][i]}};
+        const spinslide::force_contact<double> c{
+            spinslide::patch_radius<double>{p_in[7][i]},
+            spinslide::normal_force<double>{p_in[8][i]},
+            spinslide::friction_coefficient<double>{p_in[9][i]}};
+        const auto r = spinslide::spring_history_friction(
+            p, history, std::array<double, 2>{p_in[3][2 * i], p_in[3][2 * i + 1]}, p_in[4][i],
+            springs, c);
+        out.set(i, r);
+        xo[2 * i] = history.displacement[0];
+        xo[2 * i + 1] = history.displacement[1];
+        po[i] = history.twist;
+        co[i] = history.curve.ratio;
+      }
+    });
+  }
+  const bool scalar = in.shape.empty();
+  py::dict result = out.to_dict();
+  result["displacement"] = std::move(xi);
+  result["twist"] = finish(phi, scalar);
+  result["curve_ratio"] = finish(ce, scalar);
+  return result;
+}
+
+}  // namespace
+
+void bind_contact(py::module_& m) {
+  m.def("_project_to_limit_set", &project, py::arg("profile"), py::arg("force"), py::arg("torque"),
+        py::arg("torque_weight"));
+  m.def("_impulse_friction", &impulse, py::arg("profile"), py::arg("velocity"), py::arg("spin"),
+        py::arg("inverse_mass"), py::arg("radius"), py::arg("normal_impulse"),
+        py::arg("friction_coefficient"), py::arg("start_ratio"));
+  m.def("_spring_history_friction", &spring, py::arg("profile"), py::arg("displacement"),
+        py::arg("twist"), py::arg("curve_ratio"), py::arg("displacement_increment"),
+        py::arg("twist_increment"), py::arg("tangential_stiffness"), py::arg("twisting_stiffness"),
+        py::arg("radius"), py::arg("normal_force"), py::arg("friction_coefficient"));
+}
+
+}  // namespace spinslide_python
