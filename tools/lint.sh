@@ -122,6 +122,15 @@ tu="$out/all_headers.cpp"
 joblist=("headers:c++17" "headers:c++20")
 missing=()
 mapfile -t test_sources < <(find tests -name '*.cpp' -not -path 'tests/consume/*' -not -path 'tests/compile_fail/*' | LC_ALL=C sort)
+# The Python package's extension sources (issue 29), where the lint build
+# configured it (pybind11 and numpy for /usr/bin/python3).
+for f in python/src/*.cpp; do
+  if grep -qF "\"file\": \"$root/$f\"" "$db"; then
+    joblist+=("$f")
+  else
+    echo "lint: skipped $f: the Python package is not configured in $build (docs/python.md)"
+  fi
+done
 for f in "${test_sources[@]}"; do
   if grep -qF "\"file\": \"$root/$f\"" "$db"; then
     joblist+=("$f")

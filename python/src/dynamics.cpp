@@ -112,7 +112,10 @@ void bind_terminal(py::module_& m) {
 }
 
 void bind_throws(py::module_& m) {
-  py::class_<throw_result>(m, "StopResult", "A throw's stop.")
+  py::class_<throw_result>(
+      m, "StopResult",
+      "A throw's stop: its time, distance, angle and terminal regime, and the trajectory "
+      "where simulate_throw was asked for it.")
       .def_property_readonly(
           "time", [](const throw_result& r) { return r.stop.time; }, "the stop time (t* or s)")
       .def_property_readonly(

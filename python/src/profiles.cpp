@@ -32,10 +32,10 @@ struct tabulated_py : profile_handle {};
 struct scaled_py : profile_handle {};
 
 template <class Handle, class Profile>
-Handle make(Profile p, std::string repr) {
+Handle make(Profile p, const std::string& repr) {
   Handle h;
   h.profile = std::move(p);
-  h.repr = std::move(repr);
+  h.repr = repr;
   return h;
 }
 

@@ -174,3 +174,20 @@ def test_no_reference_or_memory_leak_over_a_million_calls():
     print(f"max RSS grew by {grown:.1f} MB over 1.3e6 calls")
     assert after == before
     assert grown < 8
+
+
+def test_every_public_name_has_a_docstring_and_a_stub():
+    import ast
+    from pathlib import Path
+
+    stub = Path(spinslide.__file__).with_name("__init__.pyi")
+    tree = ast.parse(stub.read_text())
+    stubbed = {n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    public = set(spinslide.__all__)
+    assert public <= stubbed, public - stubbed
+    assert stubbed - {"_Float"} <= public | {"Profile"}, stubbed - public
+    for name in public:
+        doc = getattr(spinslide, name).__doc__
+        assert doc and len(doc) > 20, name
+    assert "ε" in spinslide.force.__doc__ and "ulp" in spinslide.force.__doc__
+    assert (stub.with_name("py.typed")).exists()

@@ -80,6 +80,10 @@ def test_trajectory_arrays_and_the_observer():
     assert np.array_equal(sampled["time"], times)
     assert np.all(np.diff(sampled["speed"]) <= 0) and sampled["distance"][-1] == r.distance
     assert spinslide.simulate_throw(h, 0.4, 1.0, 2.0).trajectory is None
+    # At the integrator's own steps, trajectory() gives the observer's samples.
+    again = spinslide.trajectory(h, 0.4, 1.0, 2.0, tr["time"])
+    for key in ("speed", "spin", "distance", "angle"):
+        assert np.array_equal(again[key], tr[key])
 
 
 def test_si_throw_is_the_dimensionless_one_scaled():
