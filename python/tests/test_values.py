@@ -152,3 +152,65 @@ def test_weighted_sum_is_the_weighted_mean():
     eps = np.geomspace(1e-3, 1e3, 13)
     assert np.allclose(s.force(eps), 0.75 * a.force(eps) + 0.25 * b.force(eps), rtol=1e-15)
     assert s.mean_radius() == pytest.approx(0.75 * 2 / 3 + 0.25, rel=1e-15)
+
+
+# The derivatives of the profiles without a closed form (a central difference
+# in ln ε, docs/python.md), against analytic identities and closed forms
+# computed independently here.
+DERIVATIVE_RATIOS = np.array([1e-8, 0.01, 0.05, 0.1, 0.12, 0.13, 0.3, 0.9, 0.99, 0.999, 1.001,
+                              1.01, 2.0, 10.0, 100.0, 1e5, 1e10])
+
+
+def test_annulus_derivative_against_the_disk_identity():
+    """A uniform annulus is the disk minus its inner disk of radius b, whose
+    ratio is ε/b: 𝓕′_b(ε) = (𝓕′(ε) − b𝓕′(ε/b))/(1 − b²), with the disk's
+    closed-form 𝓕′ (held to 16 ulp above)."""
+    for b in (0.125, 0.4):
+        e = DERIVATIVE_RATIOS
+        exact = (spinslide.force_derivative(e) - b * spinslide.force_derivative(e / b)) / (1 - b * b)
+        got = spinslide.Annulus(b).force_derivative(e)
+        near = np.minimum(np.abs(np.log(e / b)), np.abs(np.log(e)))
+        worst_far = np.max(np.abs(got / exact - 1)[near > 1e-3])
+        worst_near = np.max(np.abs(got / exact - 1))
+        print(f"annulus {b}: F' within {worst_far:.1e} (1e-3 in ln eps from 1 and b), "
+              f"{worst_near:.1e} everywhere")
+        assert worst_far <= 1e-10
+        assert worst_near <= 1e-6
+        assert spinslide.Annulus(b).force_derivative(b) == pytest.approx(
+            (spinslide.force_derivative(b) - b * spinslide.force_derivative(1.0)) / (1 - b * b),
+            rel=1e-6)
+
+
+def test_ring_derivative_against_its_closed_form():
+    """The ring (docs/theory.md (R3)) with modulus k = min(ε, 1/ε):
+    ε < 1: 𝓕 = (2/π)(E − (1 − k²)K)/k, so 𝓕′ = (2/π)(K − (E − (1 − k²)K)/k²);
+    ε > 1: 𝓕 = (2/π)E(k), so 𝓕′ = (2/π)k(K − E); K, E by scipy."""
+    from scipy.special import ellipe, ellipk
+
+    e = np.array([0.05, 0.3, 0.8, 0.95, 0.99, 0.999, 1.001, 1.01, 1.05, 1.5, 5.0, 20.0])
+    k = np.where(e < 1, e, 1 / e)
+    K, E = ellipk(k * k), ellipe(k * k)
+    exact = np.where(e < 1, (2 / np.pi) * (K - (E - (1 - k * k) * K) / (k * k)),
+                     (2 / np.pi) * k * (K - E))
+    worst = np.max(np.abs(spinslide.Ring().force_derivative(e) / exact - 1))
+    print(f"ring: F' within {worst:.1e}")
+    assert worst <= 1e-10
+
+
+def test_sum_scaled_and_radial_derivatives():
+    e = np.geomspace(1e-3, 1e3, 25)
+    e = e[np.abs(np.log(e)) > 1e-2]
+    disk, hertz = spinslide.UniformDisk(), spinslide.Hertz()
+    s = spinslide.WeightedSum([(0.3, disk), (0.7, hertz)])
+    exact = 0.3 * disk.force_derivative(e) + 0.7 * hertz.force_derivative(e)
+    assert np.allclose(s.force_derivative(e), exact, rtol=1e-10, atol=0)
+    half = spinslide.Scaled(disk, 0.5)  # 𝓕(ε/a), so 𝓕′(ε/a)/a
+    e_half = e[np.abs(np.log(e / 0.5)) > 1e-2]
+    assert np.allclose(half.force_derivative(e_half), 2 * disk.force_derivative(2 * e_half),
+                       rtol=1e-10, atol=0)
+    flat = spinslide.RadialProfile(lambda r: 1.0)  # the disk, by quadrature
+    assert np.allclose(flat.force_derivative(e), disk.force_derivative(e), rtol=1e-9, atol=0)
+    assert np.allclose(s.torque_derivative(e), -e * s.force_derivative(e), rtol=1e-15, atol=0)
+    # The ends: ⟨1/r⟩/2 at 0 and 0 at ∞.
+    assert s.force_derivative(0.0) == pytest.approx(s.mean_inverse_radius() / 2, rel=1e-15)
+    assert s.force_derivative(np.inf) == 0.0
