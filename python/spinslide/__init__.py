@@ -47,6 +47,7 @@ from ._core import (  # noqa: F401  (re-exported)
     ratio_flow_zeros,
     simulate_throw,
     simulate_throw_si,
+    stop_time,
     terminal_motion,
     terminal_ratio,
     terminal_window,
@@ -65,7 +66,7 @@ __all__ = [
     "force", "torque", "force_torque", "force_derivative", "torque_derivative",
     "torque_at_force", "ratio_at_force", "force_at_torque", "ratio_at_torque", "coupling_curve",
     "terminal_ratio", "terminal_motion", "terminal_window", "ratio_flow_zeros",
-    "simulate_throw", "simulate_throw_si", "trajectory", "stop_results", "StopResults",
+    "simulate_throw", "simulate_throw_si", "stop_time", "trajectory", "stop_results", "StopResults",
     "project_to_limit_set", "LimitProjection", "impulse_friction", "spring_history_friction",
     "FrictionResult",
 ]

@@ -60,7 +60,7 @@ py::object map_typed(const py::array& any, Body& body) {
   } else {
     py::tuple t(N);
     for (std::size_t k = 0; k < N; ++k) t[k] = finish(out[k]);
-    return std::move(t);
+    return py::object(std::move(t));
   }
 }
 

@@ -45,9 +45,9 @@ broadcast broadcast_inputs(const std::vector<std::pair<py::handle, int>>& inputs
       throw py::value_error(std::string(names[k]) + " must have " + std::to_string(trailing) +
                             " trailing dimension(s) (a vector is (..., 2), a matrix (..., 3, 3))");
     arrays.push_back(a);
-    py::tuple s(a.ndim() - trailing);
-    for (py::ssize_t i = 0; i < a.ndim() - trailing; ++i) s[i] = a.shape(i);
-    leading.append(s);
+    py::list s;
+    for (py::ssize_t i = 0; i < a.ndim() - trailing; ++i) s.append(a.shape(i));
+    leading.append(py::tuple(s));
   }
   const py::tuple shape = np.attr("broadcast_shapes")(*leading);
   broadcast out;
@@ -72,7 +72,7 @@ std::vector<py::ssize_t> with(std::vector<py::ssize_t> shape,
 // A result array (or a scalar where the contacts' shape is ()).
 py::object finish(py::array a, bool scalar) {
   if (scalar) return a[py::tuple()];
-  return std::move(a);
+  return py::object(std::move(a));
 }
 
 // What a projection or a law step returns for each contact: the force (a

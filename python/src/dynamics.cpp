@@ -158,6 +158,14 @@ void bind_throws(py::module_& m) {
       "time, distance, angle and terminal regime (dimensionless, t* = t√(g/a)).  For a "
       "smooth trajectory at chosen times use spinslide.trajectory.");
   m.def(
+      "stop_time",
+      [](const profile_handle& h, double gamma, double v0, double w0) {
+        py::gil_scoped_release release;
+        return visit(h, [&](const auto& p) { return spinslide::stop_time(p, gamma, v0, w0); });
+      },
+      py::arg("profile"), py::arg("inertia_ratio"), py::arg("v0"), py::arg("omega0"),
+      "The dimensionless stop time t* of a throw (simulate_throw(...).time, without the rest).");
+  m.def(
       "trajectory",
       [](const profile_handle& h, double gamma, double v0, double w0, std::vector<double> times) {
         std::vector<motion_sample<double>> s;

@@ -54,7 +54,7 @@ py::object like_input(py::handle eps, py::object result) {
     py::tuple t = result;
     py::tuple out(t.size());
     for (std::size_t k = 0; k < t.size(); ++k) out[k] = t[k].attr("astype")("float32");
-    return std::move(out);
+    return py::object(std::move(out));
   }
   return result.attr("astype")("float32");
 }

@@ -31,6 +31,7 @@ def test_throws_against_the_quadrature_reference():
         p = PROFILES[r["profile"]]()
         g, v0, w0 = (float.fromhex(r[k]) for k in ("gamma", "v0", "omega0"))
         s = spinslide.simulate_throw(p, g, v0, w0)
+        assert spinslide.stop_time(p, g, v0, w0) == s.time
         for key in ("time", "distance", "angle"):
             worst[key] = max(worst[key], relative(getattr(s, key), r[key]))
         if float(r["eps_final"]) != 0:
