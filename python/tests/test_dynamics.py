@@ -150,3 +150,25 @@ def test_terminal_motion_and_the_flow():
     assert names == {"pure_sliding", "sliding_and_spinning", "pure_spinning"}
     assert spinslide.terminal_motion(disk, 0.5, initial_ratio=0.0).regime == \
         spinslide.TerminalRegime.pure_spinning
+
+
+def test_stop_results_of_a_python_pressure_on_worker_threads():
+    """A RadialProfile calls Python from stop_results' worker threads: the
+    same stops as simulate_throw, and what the pressure raises arrives as a
+    ValueError (not a crash, not a hang)."""
+    p = spinslide.RadialProfile(lambda r: (1 - r) * (1 + r))
+    v0 = np.array([0.3, 1.5])
+    batch = spinslide.stop_results(p, 0.4, v0, 1.0, threads=2)
+    for i, v in enumerate(v0):
+        assert batch.time[i] == spinslide.simulate_throw(p, 0.4, v, 1.0).time
+    calls = [0]
+
+    def fails_later(r):
+        calls[0] += 1
+        if calls[0] > 20000:
+            raise RuntimeError("the pressure failed")
+        return 1.0
+
+    q = spinslide.RadialProfile(fails_later)
+    with pytest.raises(ValueError, match="the pressure failed"):
+        spinslide.stop_results(q, 0.4, v0, 1.0, threads=2)
