@@ -75,9 +75,18 @@ PairGranularSpinslide::PairGranularSpinslide(LAMMPS* lmp) : Pair(lmp) {
 
   // A placeholder fix, replaced by the history fix in init_style(), so that
   // the history fix keeps this place in the fix list (before any fix the
-  // input defines afterwards).
-  id_dummy = "SPINSLIDE_HISTORY_DUMMY" + std::to_string(instance_me);
-  id_history = "SPINSLIDE_HISTORY" + std::to_string(instance_me);
+  // input defines afterwards).  Its ID is fixed, SPINSLIDE_HISTORY (then
+  // SPINSLIDE_HISTORY_2, ... for more granular/spinslide styles alive at
+  // once, in pair_style hybrid): a restart finds it whatever pair styles
+  // the writing or the reading input created before (numbered by
+  // instance_me, as LAMMPS' own granular styles do, it was not found, and
+  // every contact's history was silently dropped; issue 30).
+  for (int k = 1;; ++k) {
+    id_history =
+        k == 1 ? std::string("SPINSLIDE_HISTORY") : "SPINSLIDE_HISTORY_" + std::to_string(k);
+    id_dummy = id_history + "_DUMMY";
+    if (modify->find_fix(id_history) < 0 && modify->find_fix(id_dummy) < 0) break;
+  }
   modify->add_fix(id_dummy + " all DUMMY");
 }
 
@@ -126,6 +135,25 @@ double effective_mass(const double* rmass, const int* mask, int freeze_group_bit
 
 }  // namespace
 
+namespace {
+
+// The statistics of compute pair granular/spinslide over this rank's pairs.
+struct ContactStatistics {
+  double contacts = 0.0, sliding = 0.0, force = 0.0, torque = 0.0;
+  // The contact of i with j.  With newton off, a pair whose j is a ghost is
+  // computed by both owners (or twice, across a periodic boundary): half
+  // each, as LAMMPS' ev_tally weighs it, so that the sums count it once.
+  void add(const spinslide_lammps::ContactForce& cf, int newton_pair, int j, int nlocal) {
+    const double share = newton_pair != 0 || j < nlocal ? 1.0 : 0.5;
+    contacts += share;
+    sliding += cf.capped ? share : 0.0;
+    force += share * std::sqrt(cf.fs[0] * cf.fs[0] + cf.fs[1] * cf.fs[1] + cf.fs[2] * cf.fs[2]);
+    torque += share * std::fabs(cf.mt);
+  }
+};
+
+}  // namespace
+
 void PairGranularSpinslide::compute(int eflag, int vflag) {
   ev_init(eflag, vflag);
   for (int k = 0; k < nextra; ++k) pvector[k] = 0.0;
@@ -154,7 +182,7 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
   // The statistics (pvector) are only read by `compute pair`, which makes
   // LAMMPS tally energy on the steps it needs them: gather them only then.
   const bool tally = eflag_global != 0;
-  double ncontacts = 0.0, nsliding = 0.0, sum_force = 0.0, sum_torque = 0.0;
+  ContactStatistics stats;
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
@@ -221,14 +249,8 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
       const double fn = cf.fn;
       const double* fs = cf.fs;
       const double mt = cf.mt;
-      const bool capped = cf.capped;
 
-      if (tally) {
-        ncontacts += 1.0;
-        nsliding += capped ? 1.0 : 0.0;
-        sum_force += std::sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
-        sum_torque += std::fabs(mt);
-      }
+      if (tally) stats.add(cf, newton_pair, j, nlocal);
 
       // forces and torques: the friction acts at the contact point, at
       // r - d/2 from each centre; the twisting torque about n
@@ -266,10 +288,10 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
       if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
   }
-  pvector[kExtraContacts] = ncontacts;
-  pvector[kExtraSliding] = nsliding;
-  pvector[kExtraForce] = sum_force;
-  pvector[kExtraTorque] = sum_torque;
+  pvector[kExtraContacts] = stats.contacts;
+  pvector[kExtraSliding] = stats.sliding;
+  pvector[kExtraForce] = stats.force;
+  pvector[kExtraTorque] = stats.torque;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -399,10 +421,22 @@ void PairGranularSpinslide::init_style() {
 
   if (fix_history == nullptr) {
     fix_history = dynamic_cast<FixNeighHistory*>(modify->replace_fix(
-        id_dummy, id_history + " all NEIGH_HISTORY " + std::to_string(int(kHistSize)), 1));
+        id_dummy, id_history + " all NEIGH_HISTORY/SPINSLIDE " + std::to_string(int(kHistSize)),
+        1));
     if (fix_history == nullptr)
       error->all(FLERR, "Pair granular/spinslide could not create its history fix");
     fix_history->pair = this;
+    // A restart file with per-atom fix data but none for this history fix
+    // (written by another pair style, or by spinslide before issue 30, whose
+    // IDs were SPINSLIDE_HISTORY<n>): say so, not only in LAMMPS' list of
+    // unused restart info.
+    if (modify->nfix_restart_peratom > 0 && fix_history->restart_reset == 0 && comm->me == 0)
+      error->warning(FLERR,
+                     "Pair granular/spinslide: the restart file holds no contact history for "
+                     "fix ID " +
+                         id_history +
+                         " (see 'Unused restart file peratom fix info' in the log): every "
+                         "contact starts with unloaded springs");
   }
 
   const int ifreeze = modify->find_fix_by_style("^freeze");

@@ -5,13 +5,15 @@
 //  The plugin binary built from this file includes LAMMPS headers and runs
 //  inside LAMMPS, which is GPL-2.0: the binary is GPL-2.0 (README.md).
 //
-// Registers the pair style granular/spinslide and the fix
-// wall/gran/spinslide with LAMMPS' plugin loader:
+// Registers the pair style granular/spinslide, the fix wall/gran/spinslide
+// and the pair's history fix NEIGH_HISTORY/SPINSLIDE with LAMMPS' plugin
+// loader:
 //   plugin load /path/to/spinslideplugin.so
 
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "fix_spinslide_history.h"
 #include "fix_wall_gran_spinslide.h"
 #include "pair_granular_spinslide.h"
 
@@ -25,6 +27,10 @@ void* create_pair_granular_spinslide(void* lmp) {
 
 void* create_fix_wall_gran_spinslide(void* lmp, int argc, char** argv) {
   return new FixWallGranSpinslide(static_cast<LAMMPS*>(lmp), argc, argv);
+}
+
+void* create_fix_spinslide_history(void* lmp, int argc, char** argv) {
+  return new FixSpinslideHistory(static_cast<LAMMPS*>(lmp), argc, argv);
 }
 
 }  // namespace
@@ -49,5 +55,11 @@ extern "C" void lammpsplugin_init(void* lmp, void* handle, void* regfunc) {
       "Flat granular walls with the Hertz-Mindlin-Marshall contacts of granular/spinslide "
       "(spinslide, Coulomb-Contensou) v0.1";
   plugin.creator.v2 = &create_fix_wall_gran_spinslide;
+  (*register_plugin)(&plugin, lmp);
+
+  // The pair style's own history fix (fix_spinslide_history.h); not for inputs.
+  plugin.name = "NEIGH_HISTORY/SPINSLIDE";
+  plugin.info = "Contact history of pair granular/spinslide (internal) v0.1";
+  plugin.creator.v2 = &create_fix_spinslide_history;
   (*register_plugin)(&plugin, lmp);
 }

@@ -1,0 +1,55 @@
+# Restart continuity (issue 30; engines/lammps/examples/in.restart): runs the
+# pile in one input (two runs) and in two, the first after another pair
+# style was defined, with write_restart and read_restart between them, and
+# compares the dumps at the end with compare_dumps at 0 (bit for bit).  The
+# reading log must say that the history fix's data was restored.  Then the
+# first half again with LAMMPS' own granular styles: the reading log must
+# carry granular/spinslide's warning that the file holds none of its history.
+#   cmake -DLMP=... -DPLUGIN=... -DINPUT=... -DCOMPARE=... -DDIR=...
+#         [-DNP=2 -DMPIEXEC=mpirun] [-DCOUPLING=yes] -P restart.cmake
+foreach(var LMP PLUGIN INPUT COMPARE DIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "restart.cmake: pass -D${var}=...")
+  endif()
+endforeach()
+if(NOT DEFINED COUPLING)
+  set(COUPLING yes)
+endif()
+file(REMOVE_RECURSE "${DIR}")
+file(MAKE_DIRECTORY "${DIR}")
+set(launcher "")
+if(NP AND NP GREATER 1)
+  set(launcher "${MPIEXEC}" --allow-run-as-root --oversubscribe -np ${NP})
+endif()
+function(lammps phase out)
+  execute_process(
+    COMMAND ${launcher} "${LMP}" -in "${INPUT}" -var phase ${phase} -var plugin "${PLUGIN}"
+            -var coupling ${COUPLING} -var out ${out} ${ARGN} -log "log.${out}.${phase}"
+            -screen none
+    WORKING_DIRECTORY "${DIR}" RESULT_VARIABLE ran)
+  if(NOT ran EQUAL 0)
+    message(FATAL_ERROR "restart.cmake: LAMMPS failed (${DIR}/log.${out}.${phase})")
+  endif()
+endfunction()
+lammps(full whole)
+lammps(write halves -var other lj)
+lammps(read halves)
+execute_process(COMMAND "${COMPARE}" whole.dump halves.dump 0 WORKING_DIRECTORY "${DIR}"
+                RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "restart.cmake: the restarted run differs from the whole one")
+endif()
+file(READ "${DIR}/log.halves.read" log)
+if(NOT log MATCHES "Resetting peratom fix info from restart file:\n  fix style: NEIGH_HISTORY/SPINSLIDE, fix ID: SPINSLIDE_HISTORY\n")
+  message(FATAL_ERROR "restart.cmake: the contact history was not restored (${DIR}/log.halves.read)")
+endif()
+if(log MATCHES "Unused restart file")
+  message(FATAL_ERROR "restart.cmake: restart info left unused (${DIR}/log.halves.read)")
+endif()
+lammps(write stock -var writer stock)
+lammps(read stock)
+file(READ "${DIR}/log.stock.read" log)
+if(NOT log MATCHES "WARNING: Pair granular/spinslide: the restart file holds no contact history")
+  message(FATAL_ERROR "restart.cmake: no warning for a restart without the history (${DIR}/log.stock.read)")
+endif()
+message(STATUS "restart.cmake: the restarted run equals the whole one bit for bit; the warning is there")
