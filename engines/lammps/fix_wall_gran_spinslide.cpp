@@ -62,6 +62,10 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
     error->all(FLERR,
                "Fix wall/gran/spinslide requires atom attributes radius, rmass, omega, "
                "torque (atom_style sphere)");
+  for (int iarg = 3; iarg < narg; iarg++) {
+    const std::string why = spinslide_lammps::unsupported_granular_keyword(arg[iarg]);
+    if (!why.empty()) error->all(FLERR, "Fix wall/gran/spinslide: {}: {}", arg[iarg], why);
+  }
   if (narg < 10) error->all(FLERR, "Illegal fix wall/gran/spinslide command: {}", kSyntax);
 
   const double e_one = utils::numeric(FLERR, arg[3], false, lmp);

@@ -4,7 +4,8 @@
 //
 /// \file keywords.h
 /// The two-way keyword values of the plugin's commands (coupling yes|no,
-/// twist_transfer symmetric|negate, moduli exact|legacy), read in one place.
+/// twist_transfer symmetric|negate, moduli exact|legacy), read in one place,
+/// and the message for LAMMPS' granular keywords that it does not take.
 
 #ifndef SPINSLIDE_LAMMPS_KEYWORDS_H
 #define SPINSLIDE_LAMMPS_KEYWORDS_H
@@ -23,6 +24,27 @@ inline int either(const std::string& value, std::initializer_list<const char*> o
   for (const char* v : zero)
     if (value == v) return 0;
   return -1;
+}
+
+/// Why a keyword of LAMMPS' own granular commands is refused here, or an
+/// empty string if `key` is not one of them: a user converting an input
+/// reads what to do instead of "unknown keyword".
+inline std::string unsupported_granular_keyword(const std::string& key) {
+  if (key == "hertz" || key == "hertz/material" || key == "dmt" || key == "jkr" || key == "hooke" ||
+      key == "tangential" || key == "twisting" || key == "damping")
+    return "the plugin's contact model is fixed (Hertz with E, nu and eta_n; Mindlin and "
+           "Marshall springs; the coupled cap): give the numbers E eta_n nu mu, not LAMMPS' "
+           "model keywords (docs/lammps.md)";
+  if (key == "rolling" || key == "limit_damping" || key == "cohesion")
+    return "rolling resistance, cohesion (jkr, dmt) and limit_damping are not supported "
+           "yet (docs/lammps.md)";
+  if (key == "zcylinder" || key == "region")
+    return "curved and region walls are not supported yet: only xplane, yplane and zplane "
+           "(docs/lammps.md)";
+  if (key == "wiggle" || key == "shear" || key == "contacts" || key == "temperature")
+    return "moving walls, per-contact output and heat conduction of fix wall/gran are not "
+           "supported: the wall is fixed in space";
+  return "";
 }
 
 }  // namespace spinslide_lammps

@@ -349,6 +349,10 @@ void PairGranularSpinslide::settings(int narg, char** arg) {
 ------------------------------------------------------------------------- */
 
 void PairGranularSpinslide::coeff(int narg, char** arg) {
+  for (int iarg = 2; iarg < narg; iarg++) {
+    const std::string why = spinslide_lammps::unsupported_granular_keyword(arg[iarg]);
+    if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}: {}", arg[iarg], why);
+  }
   if (narg < 6)
     error->all(FLERR,
                "Incorrect args for pair coefficients: "
@@ -369,9 +373,15 @@ void PairGranularSpinslide::coeff(int narg, char** arg) {
       error->all(FLERR, "Incorrect args for pair coefficients: {} needs a value", arg[iarg]);
     if (strcmp(arg[iarg], "xgammat") == 0)
       xgt_one = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    else if (strcmp(arg[iarg], "cutoff") == 0)
+    else if (strcmp(arg[iarg], "cutoff") == 0) {
       cut_one = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    else
+      // (LAMMPS' granular takes cutoff -1 for automatic; here the automatic
+      // cutoff is the default, and a given one must be a distance.)
+      if (!(cut_one > 0.0))
+        error->all(FLERR,
+                   "pair_coeff granular/spinslide: cutoff must be > 0 (leave it out for the "
+                   "automatic cutoff, the contact distance of the largest spheres)");
+    } else
       error->all(FLERR, "Incorrect args for pair coefficients: unknown keyword {}", arg[iarg]);
   }
   if (!(e_one > 0.0)) error->all(FLERR, "pair_coeff granular/spinslide: E must be > 0");

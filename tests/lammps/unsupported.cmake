@@ -1,0 +1,25 @@
+# The plugin refuses what it cannot do with a message that says why
+# (tests/lammps/in.unsupported): each case must fail with its message.
+#   cmake -DLMP=... -DPLUGIN=... -DINPUT=... -DDIR=... -P unsupported.cmake
+foreach(var LMP PLUGIN INPUT DIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "unsupported.cmake: pass -D${var}=...")
+  endif()
+endforeach()
+file(MAKE_DIRECTORY "${DIR}")
+set(expected
+  "pair_coeff granular/spinslide: hertz/material: the plugin's contact model is fixed"
+  "pair_coeff granular/spinslide: cutoff must be > 0 \\(leave it out for the automatic cutoff"
+  "Fix wall/gran/spinslide: zcylinder: curved and region walls are not supported yet"
+  "pair_coeff granular/spinslide: rolling: rolling resistance, cohesion")
+set(case 0)
+foreach(message IN LISTS expected)
+  math(EXPR case "${case} + 1")
+  execute_process(
+    COMMAND "${LMP}" -in "${INPUT}" -var plugin "${PLUGIN}" -var case ${case} -log none
+    WORKING_DIRECTORY "${DIR}" RESULT_VARIABLE ran OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(ran EQUAL 0 OR NOT "${out}${err}" MATCHES "ERROR: ${message}")
+    message(FATAL_ERROR "unsupported.cmake: case ${case}: expected the error '${message}', got:\n${out}${err}")
+  endif()
+  message(STATUS "case ${case}: refused, saying why")
+endforeach()
