@@ -53,12 +53,15 @@ using spinslide_lammps::effective_youngs;
 using spinslide_lammps::kHistRatio;
 using spinslide_lammps::kHistShear;
 using spinslide_lammps::kHistSize;
+using spinslide_lammps::kHistSliding;
 using spinslide_lammps::kHistTwist;
 
 /* ---------------------------------------------------------------------- */
 
 PairGranularSpinslide::PairGranularSpinslide(LAMMPS* lmp) : Pair(lmp) {
-  single_enable = 0;
+  single_enable = 1;
+  single_extra = kSingleSize;
+  svector = new double[single_extra];
   restartinfo = 0;
   no_virial_fdotr_compute = 1;
   centroidstressflag = CENTROID_NOTAVAIL;
@@ -95,6 +98,8 @@ PairGranularSpinslide::PairGranularSpinslide(LAMMPS* lmp) : Pair(lmp) {
 PairGranularSpinslide::~PairGranularSpinslide() {
   delete[] pvector;
   pvector = nullptr;
+  delete[] svector;
+  svector = nullptr;
   if (modify) {
     if (fix_history) {
       if (modify->find_fix(id_history) >= 0) modify->delete_fix(id_history);
@@ -159,14 +164,10 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
   for (int k = 0; k < nextra; ++k) pvector[k] = 0.0;
 
   double** x = atom->x;
-  double** v = atom->v;
   double** f = atom->f;
-  double** omega = atom->omega;
   double** torque = atom->torque;
   const double* radius = atom->radius;
-  const double* rmass = atom->rmass;
   const int* type = atom->type;
-  const int* mask = atom->mask;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   // setup() computes forces without advancing the springs
@@ -214,33 +215,9 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
       touch[jj] = 1;
 
       const double r = std::sqrt(rsq);
-      const double rinv = 1.0 / r;
-      const double nx = delx * rinv, ny = dely * rinv, nz = delz * rinv;
-
-      const double meff = effective_mass(rmass, mask, freeze_group_bit, i, j);
-
-      spinslide_lammps::ContactState state;
-      state.n[0] = nx;
-      state.n[1] = ny;
-      state.n[2] = nz;
-      state.delta = radsum - r;
-      state.reff = radi * radj / radsum;
-      state.meff = meff;
-      state.vr[0] = v[i][0] - v[j][0];
-      state.vr[1] = v[i][1] - v[j][1];
-      state.vr[2] = v[i][2] - v[j][2];
-      state.wr[0] = radi * omega[i][0] + radj * omega[j][0];
-      state.wr[1] = radi * omega[i][1] + radj * omega[j][1];
-      state.wr[2] = radi * omega[i][2] + radj * omega[j][2];
-      state.twist_rate = (omega[i][0] - omega[j][0]) * nx + (omega[i][1] - omega[j][1]) * ny +
-                         (omega[i][2] - omega[j][2]) * nz;
-
-      spinslide_lammps::ContactLaw law;
-      law.kn = kn_hertz[itype][jtype];
-      law.kt = kt_mindlin[itype][jtype];
-      law.eta_n = eta_n[itype][jtype];
-      law.xgammat = xgammat[itype][jtype];
-      law.mu = mu[itype][jtype];
+      const spinslide_lammps::ContactState state = contact_state(i, j, r);
+      const double nx = state.n[0], ny = state.n[1], nz = state.n[2];
+      const spinslide_lammps::ContactLaw law = contact_law(itype, jtype);
 
       spinslide_lammps::ContactForce cf;
       spinslide_lammps::contact_force(law, state, history, dt, advance, coupled != 0, error,
@@ -292,6 +269,90 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
   pvector[kExtraSliding] = stats.sliding;
   pvector[kExtraForce] = stats.force;
   pvector[kExtraTorque] = stats.torque;
+}
+
+/* ---------------------------------------------------------------------- */
+
+// The geometry and relative motion of i's contact with j at distance r.
+spinslide_lammps::ContactState PairGranularSpinslide::contact_state(int i, int j, double r) const {
+  double** x = atom->x;
+  double** v = atom->v;
+  double** omega = atom->omega;
+  const double radi = atom->radius[i], radj = atom->radius[j];
+  const double radsum = radi + radj;
+  const double rinv = 1.0 / r;
+  spinslide_lammps::ContactState state;
+  for (int k = 0; k < 3; ++k) {
+    state.n[k] = (x[i][k] - x[j][k]) * rinv;
+    state.vr[k] = v[i][k] - v[j][k];
+    state.wr[k] = radi * omega[i][k] + radj * omega[j][k];
+  }
+  state.delta = radsum - r;
+  state.reff = radi * radj / radsum;
+  state.meff = effective_mass(atom->rmass, atom->mask, freeze_group_bit, i, j);
+  state.twist_rate = (omega[i][0] - omega[j][0]) * state.n[0] +
+                     (omega[i][1] - omega[j][1]) * state.n[1] +
+                     (omega[i][2] - omega[j][2]) * state.n[2];
+  return state;
+}
+
+// The constants of the type pair.
+spinslide_lammps::ContactLaw PairGranularSpinslide::contact_law(int itype, int jtype) const {
+  spinslide_lammps::ContactLaw law;
+  law.kn = kn_hertz[itype][jtype];
+  law.kt = kt_mindlin[itype][jtype];
+  law.eta_n = eta_n[itype][jtype];
+  law.xgammat = xgammat[itype][jtype];
+  law.mu = mu[itype][jtype];
+  return law;
+}
+
+/* ----------------------------------------------------------------------
+   One pair for compute pair/local: the force of the last step, from the
+   history as the step left it (not advanced, nothing written back).
+   fforce: the normal force over r (LAMMPS' convention: the force on i along
+   x_i - x_j is fforce (x_i - x_j)); svector (p1 ... p7 of pair/local):
+   the friction force on i (x, y, z), its magnitude, the twisting torque on i
+   about n, the contact's kinematic ratio eps = |v_slip|/(a |w_n|) (inf
+   without spin, 0 at rest), 1 if at the friction limit (sliding) and 1 if in
+   contact (all 0 for a pair apart, so that sums over pairs count contacts).
+------------------------------------------------------------------------- */
+
+double PairGranularSpinslide::single(int i, int j, int itype, int jtype, double rsq,
+                                     double /*factor_coul*/, double /*factor_lj*/, double& fforce) {
+  for (int m = 0; m < single_extra; m++) svector[m] = 0.0;
+  fforce = 0.0;
+  const double radsum = atom->radius[i] + atom->radius[j];
+  if (rsq >= radsum * radsum) return 0.0;
+  if (fix_history == nullptr || fix_history->firstvalue == nullptr || list == nullptr)
+    error->one(FLERR, "Pair granular/spinslide: single() needs the history of a run");
+  // i's neighbor list holds the pair and its history (compute pair/local
+  // walks that list).
+  const int jnum = list->numneigh[i];
+  const int* jlist = list->firstneigh[i];
+  int jj = 0;
+  while (jj < jnum && (jlist[jj] & NEIGHMASK) != j) ++jj;
+  if (jj == jnum) return 0.0;
+  double history[kHistSize];
+  const double* stored = &fix_history->firstvalue[i][static_cast<std::ptrdiff_t>(kHistSize) * jj];
+  std::copy(stored, stored + kHistSize, history);
+
+  const double r = std::sqrt(rsq);
+  const spinslide_lammps::ContactState state = contact_state(i, j, r);
+  spinslide_lammps::ContactForce cf;
+  spinslide_lammps::contact_force(contact_law(itype, jtype), state, history, dt, false,
+                                  coupled != 0, error, "pair granular/spinslide", cf);
+  fforce = cf.fn / r;
+  for (int k = 0; k < 3; ++k) svector[k] = cf.fs[k];
+  svector[3] = std::sqrt(cf.fs[0] * cf.fs[0] + cf.fs[1] * cf.fs[1] + cf.fs[2] * cf.fs[2]);
+  svector[4] = cf.mt;
+  svector[5] = spinslide_lammps::slip_ratio(state);
+  // (The force computation of the step rewrote a capped contact's springs
+  // onto the cap, from which the recomputation above may land a rounding
+  // inside it: the step's own verdict is the one kept.)
+  svector[6] = stored[kHistSliding];
+  svector[7] = 1.0;
+  return 0.0;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -21,6 +21,7 @@
 #define SPINSLIDE_LAMMPS_PAIR_GRANULAR_SPINSLIDE_H
 
 #include "pair.h"
+#include "spinslide_contact.h"
 
 #include <string>
 
@@ -40,15 +41,22 @@ class PairGranularSpinslide : public Pair {
   double atom2cut(int) override;
   double radii2cut(double, double) override;
   void transfer_history(double*, double*) override;
+  double single(int, int, int, int, double, double, double, double&) override;
 
   /// The extra quantities of the last force computation, on this process
   /// (`compute ID all pair granular/spinslide` sums them over processes):
   /// contacts, contacts at the friction limit (sliding), the sum of the
   /// friction forces' magnitudes and of the twisting torques' magnitudes.
   enum : int { kExtraContacts = 0, kExtraSliding, kExtraForce, kExtraTorque, kExtraSize };
+  /// The extra quantities of single() (compute pair/local p1 ... p8):
+  /// the friction force (x, y, z) and its magnitude, the twisting torque,
+  /// the contact's ratio eps, 1 if sliding, 1 if in contact.
+  enum : int { kSingleSize = 8 };
 
  protected:
   void allocate();
+  spinslide_lammps::ContactState contact_state(int i, int j, double r) const;
+  spinslide_lammps::ContactLaw contact_law(int itype, int jtype) const;
   double dt = 0.0;
   int coupled = 1;       // 1: the coupled cap (default); 0: independent caps
   int twist_negate = 0;  // 1: the twist spring flips sign when a contact changes owner

@@ -49,16 +49,19 @@
 #include <array>
 #include <cmath>
 #include <exception>
+#include <limits>
 
 namespace spinslide_lammps {
 
 /// The history of one contact, in this order.
 enum : int {
-  kHistShear = 0,  ///< tangential spring displacement, 3 components (lab frame)
-  kHistTwist = 3,  ///< twisting spring angle
-  kHistRatio = 4,  ///< where the last slip left the limit curve (a spinslide::curve_point):
-                   ///< eps (0: none), then F, T, F' and F'' there, the warm start
-  kHistSize = 9
+  kHistShear = 0,    ///< tangential spring displacement, 3 components (lab frame)
+  kHistTwist = 3,    ///< twisting spring angle
+  kHistRatio = 4,    ///< where the last slip left the limit curve (a spinslide::curve_point):
+                     ///< eps (0: none), then F, T, F' and F'' there, the warm start
+  kHistSliding = 9,  ///< 1 if the last force computation capped the contact (its
+                     ///< sliding state, for compute pair/local), else 0
+  kHistSize = 10
 };
 
 /// The effective Young's modulus E* of two materials (Hertz).
@@ -89,6 +92,28 @@ struct ContactState {
   double wr[3];       ///< r_i w_i + r_j w_j (a wall: r_i w_i)
   double twist_rate;  ///< (w_i - w_j).n (a wall: w_i.n)
 };
+
+/// The slip velocity at the contact point: the tangential relative velocity
+/// minus the surfaces' rotation (r_i w_i + r_j w_j) x n.
+inline void slip_velocity(const ContactState& s, double vtr[3]) {
+  const double nx = s.n[0], ny = s.n[1], nz = s.n[2];
+  const double vnnr = s.vr[0] * nx + s.vr[1] * ny + s.vr[2] * nz;
+  const double wr1 = s.wr[0], wr2 = s.wr[1], wr3 = s.wr[2];
+  vtr[0] = s.vr[0] - nx * vnnr - (nz * wr2 - ny * wr3);
+  vtr[1] = s.vr[1] - ny * vnnr - (nx * wr3 - nz * wr1);
+  vtr[2] = s.vr[2] - nz * vnnr - (ny * wr1 - nx * wr2);
+}
+
+/// The contact's ratio eps = |v_slip|/(a |w_n|), a = sqrt(delta R*): +inf
+/// without relative spin, 0 at rest.
+inline double slip_ratio(const ContactState& s) {
+  double vtr[3];
+  slip_velocity(s, vtr);
+  const double slip = std::sqrt(vtr[0] * vtr[0] + vtr[1] * vtr[1] + vtr[2] * vtr[2]);
+  const double spin = std::sqrt(s.delta * s.reff) * std::fabs(s.twist_rate);
+  if (slip == 0.0) return 0.0;
+  return spin > 0.0 ? slip / spin : std::numeric_limits<double>::infinity();
+}
 
 /// The forces on the sphere (the partner takes the opposite ones).
 struct ContactForce {
@@ -231,16 +256,8 @@ inline void contact_force(const ContactLaw& law, const ContactState& s, double* 
   const double load_n = std::fabs(fn);
   const double fscrit = law.mu * load_n;
 
-  // slip velocity at the contact point: tangential relative velocity minus
-  // the surfaces' rotation (r_i w_i + r_j w_j) x n
-  const double vt1 = vr1 - nx * vnnr;
-  const double vt2 = vr2 - ny * vnnr;
-  const double vt3 = vr3 - nz * vnnr;
-  const double wr1 = s.wr[0], wr2 = s.wr[1], wr3 = s.wr[2];
   double vtr[3];
-  vtr[0] = vt1 - (nz * wr2 - ny * wr3);
-  vtr[1] = vt2 - (nx * wr3 - nz * wr1);
-  vtr[2] = vt3 - (ny * wr1 - nx * wr2);
+  slip_velocity(s, vtr);
 
   // Mindlin and Marshall springs and their damping
   const double kt = law.kt * a;
@@ -288,6 +305,7 @@ inline void contact_force(const ContactLaw& law, const ContactState& s, double* 
     out.capped = detail::friction_uncoupled(history, vtr, twist_rate, kt, damp_t, k_tw, damp_tw,
                                             fscrit, mtcrit, out.fs, out.mt);
   }
+  history[kHistSliding] = out.capped ? 1.0 : 0.0;
 }
 
 }  // namespace spinslide_lammps
