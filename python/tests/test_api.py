@@ -105,7 +105,7 @@ def test_a_profile_cannot_be_built_from_the_base_class():
         "WeightedSum([(0.5, Hertz()), (0.5, Ring(0.5))])"
 
 
-def _stamps_inside(work, seconds=0.4):
+def _stamps_inside(work, seconds=0.8):
     """How often a Python thread woke (every millisecond) while this thread ran
     `work` again and again for `seconds`: where the GIL is released in work,
     about once per millisecond; where it is held, not at all during a call
