@@ -28,6 +28,7 @@
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -124,19 +125,35 @@ void figure2(const output& out) {
   out.figure("fig2_force_torque", "Fig. 2, F(eps), T(eps) and T(F)", script);
 }
 
-// Fig. 3: trajectories of the paper's disk from throws on a quarter circle.
+// Fig. 3: trajectories of the paper's disk from throws on a quarter circle,
+// each sampled densely (spinslide::trajectory at 600 times: half evenly in t,
+// half evenly in log(t_stop − t) down to 1e-9 of the stop, where ε still
+// moves), so that every curve is smooth at the figure's size (issue 31; the
+// integrator's own steps, about 9 per throw, drew visible corners).
+std::vector<double> sample_times(double stop) {
+  const int half = 300;
+  std::vector<double> t;
+  for (int k = 0; k < half; ++k) t.push_back(stop * k / half);
+  for (int k = 0; k < half; ++k)  // stop − 0.5 stop … stop − 1e-9 stop, geometrically
+    t.push_back(stop - 0.5 * stop * std::pow(2e-9, double(k) / (half - 1)));
+  t.push_back(stop);
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return t;
+}
+
 void figure3(const output& out) {
   FILE* f = out.open("fig3_trajectories.csv");
   if (!f) return;
   std::fprintf(f, "throw,t,v,omega,eps\n");
   int n = 0;
+  const spinslide::uniform_disk<> disk;
   for (int i = 0; i < 16; ++i) {
     const double a = (i + 0.5) / 16 * pi / 2;  // the direction of (v0*, omega0*)
     const double v0 = std::cos(a), w0 = std::sin(a);
-    spinslide::simulate_throw(
-        spinslide::uniform_disk<>(), 0.5, v0, w0, [&](const spinslide::motion_sample<double>& s) {
-          std::fprintf(f, "%d,%.9g,%.9g,%.9g,%.9g\n", i, s.time, s.speed, s.spin, s.ratio);
-        });
+    const double stop = spinslide::simulate_throw(disk, 0.5, v0, w0).time;
+    for (const auto& s : spinslide::trajectory(disk, 0.5, v0, w0, sample_times(stop)))
+      std::fprintf(f, "%d,%.9g,%.9g,%.9g,%.9g\n", i, s.time, s.speed, s.spin, s.ratio);
     std::fprintf(f, "\n\n");
     ++n;
   }

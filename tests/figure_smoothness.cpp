@@ -1,0 +1,141 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+// figure_smoothness: fails when a figure's curves would show corners at the
+// size the figure is drawn (issue 31).
+//
+//   figure_smoothness FILE.csv X_COLUMN Y_COLUMN xlin|xlog ylin|ylog MAX_DEGREES [END]
+//
+// FILE.csv: a header line, then blocks of rows (one curve each) separated by
+// blank lines, as the examples write them for gnuplot.  Each curve is taken
+// in plot coordinates (the logarithm on a log axis), scaled by the range of
+// all curves, so that 1 is the width or height of the panel.  Points closer
+// than 1/500 of the panel (a pixel of a 500-pixel figure) to the last kept
+// point are passed over, as a reader cannot see them; the turning angle
+// between consecutive kept segments must stay below MAX_DEGREES.  Prints the
+// largest angle and where it is.  Rows with a non-finite or, on a log axis,
+// non-positive coordinate are left out (they are not drawn).  END (default
+// 0): vertices closer than END (in panel units) to a curve's last point are
+// not judged, for curves that end in a true corner (a throw's path in the
+// (v*, ω*) plane turns onto the terminal ratio's line within a few pixels
+// of the origin, however densely it is sampled).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct point {
+  double x, y;
+};
+using curve = std::vector<point>;
+
+struct axis {
+  int column;
+  bool log;
+  double lo = INFINITY, hi = -INFINITY;
+  bool take(double& v) const {
+    if (!std::isfinite(v) || (log && !(v > 0))) return false;
+    if (log) v = std::log10(v);
+    return true;
+  }
+};
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream s(line);
+  std::string cell;
+  while (std::getline(s, cell, ',')) out.push_back(cell);
+  return out;
+}
+
+std::vector<curve> read_curves(const char* path, axis& x, axis& y) {
+  std::ifstream in(path);
+  std::vector<curve> curves(1);
+  std::string line;
+  if (!std::getline(in, line)) return {};
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) {
+      if (!curves.back().empty()) curves.emplace_back();
+      continue;
+    }
+    const auto cells = split(line);
+    if (static_cast<int>(cells.size()) <= std::max(x.column, y.column)) continue;
+    double px = std::strtod(cells[static_cast<std::size_t>(x.column)].c_str(), nullptr);
+    double py = std::strtod(cells[static_cast<std::size_t>(y.column)].c_str(), nullptr);
+    if (!x.take(px) || !y.take(py)) continue;
+    x.lo = std::min(x.lo, px);
+    x.hi = std::max(x.hi, px);
+    y.lo = std::min(y.lo, py);
+    y.hi = std::max(y.hi, py);
+    curves.back().push_back({px, py});
+  }
+  if (curves.back().empty()) curves.pop_back();
+  return curves;
+}
+
+// The curve in panel units, with the points a reader cannot tell apart
+// passed over.
+curve visible(const curve& c, const axis& x, const axis& y) {
+  const double wx = x.hi > x.lo ? x.hi - x.lo : 1, wy = y.hi > y.lo ? y.hi - y.lo : 1;
+  curve out;
+  for (const point& p : c) {
+    const point q{(p.x - x.lo) / wx, (p.y - y.lo) / wy};
+    if (out.empty() || std::hypot(q.x - out.back().x, q.y - out.back().y) >= 1.0 / 500)
+      out.push_back(q);
+  }
+  return out;
+}
+
+double turning_degrees(const point& a, const point& b, const point& c) {
+  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - b.x, vy = c.y - b.y;
+  const double cosine = (ux * vx + uy * vy) / (std::hypot(ux, uy) * std::hypot(vx, vy));
+  const double degree = 3.14159265358979323846 / 180;
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) / degree;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 7 && argc != 8) {
+    std::fprintf(stderr,
+                 "usage: figure_smoothness FILE.csv X_COLUMN Y_COLUMN xlin|xlog ylin|ylog "
+                 "MAX_DEGREES [END]\n");
+    return 2;
+  }
+  const double end = argc == 8 ? std::strtod(argv[7], nullptr) : 0.0;
+  axis x{std::atoi(argv[2]), std::string(argv[4]) == "xlog"};
+  axis y{std::atoi(argv[3]), std::string(argv[5]) == "ylog"};
+  const double limit = std::strtod(argv[6], nullptr);
+  const std::vector<curve> curves = read_curves(argv[1], x, y);
+  if (curves.empty()) {
+    std::fprintf(stderr, "figure_smoothness: no curve in %s\n", argv[1]);
+    return 2;
+  }
+  double worst = 0;
+  std::size_t worst_curve = 0, worst_point = 0, kept = 0;
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const curve c = visible(curves[k], x, y);
+    kept += c.size();
+    for (std::size_t i = 1; i + 1 < c.size(); ++i) {
+      if (std::hypot(c[i].x - c.back().x, c[i].y - c.back().y) < end) continue;
+      const double angle = turning_degrees(c[i - 1], c[i], c[i + 1]);
+      if (angle > worst) {
+        worst = angle;
+        worst_curve = k;
+        worst_point = i;
+      }
+    }
+  }
+  std::printf(
+      "%s, columns %d-%d: %zu curves, %zu visible points, largest turn %.2f degrees "
+      "(curve %zu, point %zu); limit %.2f\n",
+      argv[1], x.column, y.column, curves.size(), kept, worst, worst_curve, worst_point, limit);
+  return worst <= limit ? 0 : 1;
+}
