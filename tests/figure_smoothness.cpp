@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -39,7 +40,8 @@ using curve = std::vector<point>;
 struct axis {
   int column;
   bool log;
-  double lo = INFINITY, hi = -INFINITY;
+  double lo = std::numeric_limits<double>::infinity(),
+         hi = -std::numeric_limits<double>::infinity();
   bool take(double& v) const {
     if (!std::isfinite(v) || (log && !(v > 0))) return false;
     if (log) v = std::log10(v);
