@@ -5,10 +5,11 @@
 // figure_smoothness: fails when a figure's curves would show corners at the
 // size the figure is drawn (issue 31).
 //
-//   figure_smoothness FILE.csv X_COLUMN Y_COLUMN xlin|xlog ylin|ylog MAX_DEGREES [END]
+//   figure_smoothness FILE.csv X_COLUMN Y_COLUMN xlin|xlog ylin|ylog MAX_DEGREES [END [stop]]
 //
-// FILE.csv: a header line, then blocks of rows (one curve each) separated by
-// blank lines, as the examples write them for gnuplot.  Each curve is taken
+// FILE.csv: blocks of rows (one curve each) separated by blank lines, as the
+// examples write them for gnuplot; cells separated by commas or blanks;
+// columns counted from 0; header lines and lines starting with # skipped.  Each curve is taken
 // in plot coordinates (the logarithm on a log axis), scaled by the range of
 // all curves, so that 1 is the width or height of the panel.  Points closer
 // than 1/500 of the panel (a pixel of a 500-pixel figure) to the last kept
@@ -19,7 +20,9 @@
 // 0): vertices closer than END (in panel units) to a curve's last point are
 // not judged, for curves that end in a true corner (a throw's path in the
 // (v*, ω*) plane turns onto the terminal ratio's line within a few pixels
-// of the origin, however densely it is sampled).
+// of the origin, however densely it is sampled).  `stop`: nor are vertices
+// next to a point where y is 0, a time series' true corner where the motion
+// stops (the speed reaches 0 with a finite slope and stays there).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -34,6 +37,7 @@ namespace {
 
 struct point {
   double x, y;
+  bool at_rest = false;  // y is exactly 0 in the data
 };
 using curve = std::vector<point>;
 
@@ -49,26 +53,37 @@ struct axis {
   }
 };
 
-std::vector<std::string> split(const std::string& line) {
+// The cells of a row, separated by commas or blanks.
+std::vector<std::string> split(std::string line) {
+  std::replace(line.begin(), line.end(), ',', ' ');
   std::vector<std::string> out;
   std::stringstream s(line);
   std::string cell;
-  while (std::getline(s, cell, ',')) out.push_back(cell);
+  while (s >> cell) out.push_back(cell);
   return out;
+}
+
+// A row of text (a header), not of numbers.
+bool is_header(const std::vector<std::string>& cells) {
+  if (cells.empty()) return false;
+  char* end = nullptr;
+  std::strtod(cells[0].c_str(), &end);
+  return end == cells[0].c_str();
 }
 
 std::vector<curve> read_curves(const char* path, axis& x, axis& y) {
   std::ifstream in(path);
   std::vector<curve> curves(1);
   std::string line;
-  if (!std::getline(in, line)) return {};
   while (std::getline(in, line)) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) {
       if (!curves.back().empty()) curves.emplace_back();
       continue;
     }
+    if (line[line.find_first_not_of(" \t")] == '#') continue;  // a comment
     const auto cells = split(line);
-    if (static_cast<int>(cells.size()) <= std::max(x.column, y.column)) continue;
+    if (is_header(cells) || static_cast<int>(cells.size()) <= std::max(x.column, y.column))
+      continue;
     double px = std::strtod(cells[static_cast<std::size_t>(x.column)].c_str(), nullptr);
     double py = std::strtod(cells[static_cast<std::size_t>(y.column)].c_str(), nullptr);
     if (!x.take(px) || !y.take(py)) continue;
@@ -76,7 +91,7 @@ std::vector<curve> read_curves(const char* path, axis& x, axis& y) {
     x.hi = std::max(x.hi, px);
     y.lo = std::min(y.lo, py);
     y.hi = std::max(y.hi, py);
-    curves.back().push_back({px, py});
+    curves.back().push_back({px, py, py == 0});
   }
   if (curves.back().empty()) curves.pop_back();
   return curves;
@@ -88,7 +103,7 @@ curve visible(const curve& c, const axis& x, const axis& y) {
   const double wx = x.hi > x.lo ? x.hi - x.lo : 1, wy = y.hi > y.lo ? y.hi - y.lo : 1;
   curve out;
   for (const point& p : c) {
-    const point q{(p.x - x.lo) / wx, (p.y - y.lo) / wy};
+    const point q{(p.x - x.lo) / wx, (p.y - y.lo) / wy, p.at_rest};
     if (out.empty() || std::hypot(q.x - out.back().x, q.y - out.back().y) >= 1.0 / 500)
       out.push_back(q);
   }
@@ -105,13 +120,14 @@ double turning_degrees(const point& a, const point& b, const point& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 7 && argc != 8) {
+  if (argc < 7 || argc > 9) {
     std::fprintf(stderr,
                  "usage: figure_smoothness FILE.csv X_COLUMN Y_COLUMN xlin|xlog ylin|ylog "
-                 "MAX_DEGREES [END]\n");
+                 "MAX_DEGREES [END [stop]]\n");
     return 2;
   }
-  const double end = argc == 8 ? std::strtod(argv[7], nullptr) : 0.0;
+  const double end = argc >= 8 ? std::strtod(argv[7], nullptr) : 0.0;
+  const bool skip_stop = argc == 9 && std::string(argv[8]) == "stop";
   axis x{std::atoi(argv[2]), std::string(argv[4]) == "xlog"};
   axis y{std::atoi(argv[3]), std::string(argv[5]) == "ylog"};
   const double limit = std::strtod(argv[6], nullptr);
@@ -127,6 +143,7 @@ int main(int argc, char** argv) {
     kept += c.size();
     for (std::size_t i = 1; i + 1 < c.size(); ++i) {
       if (std::hypot(c[i].x - c.back().x, c[i].y - c.back().y) < end) continue;
+      if (skip_stop && (c[i - 1].at_rest || c[i].at_rest || c[i + 1].at_rest)) continue;
       const double angle = turning_degrees(c[i - 1], c[i], c[i + 1]);
       if (angle > worst) {
         worst = angle;
