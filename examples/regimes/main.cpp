@@ -9,9 +9,11 @@
 // For each profile it prints the window (W) ⟨r²⟩/2 < γ < 2⟨r⟩/⟨1/r⟩ from the
 // profile's moments, the γ at which the scan of terminal_motion sees the
 // regime change (they must agree), and ε₀ at a few γ; it writes regimes.csv
-// (γ and ε₀ per profile; 0 = pure spinning, inf = pure sliding) and, with
-// gnuplot, regimes.png: ε₀ against γ, one curve per profile, each running from
-// ∞ at its window's lower edge to 0 at its upper edge.
+// (the scan: γ and ε₀ per profile; 0 = pure spinning, inf = pure sliding),
+// regimes_curves.csv (the figure's curves, sampled densely towards the
+// window's edges) and, with gnuplot, regimes.png: ε₀ against γ, one curve
+// per profile, each running from ∞ at its window's lower edge to 0 at its
+// upper edge.
 #include <spinslide/spinslide.hpp>
 
 #include <cmath>
@@ -47,6 +49,25 @@ column scan(const std::string& name, const Profile& p, const std::vector<double>
   }
   std::fprintf(stderr, "  %s\n", name.c_str());
   return c;
+}
+
+// ε₀ of `p` inside its window (lower, upper), for the figure: 601 values
+// of γ spaced evenly in the middle and geometrically towards both edges (to
+// 5e-7 of the window's width), where ε₀ runs off to ∞ and to 0 (issue 31:
+// the shared grid of the scan drew those plunges as a few long segments);
+// only the points inside the plotted range 1e-2 ≤ ε₀ ≤ 1e2 are written.
+template <class Profile>
+void write_curve(FILE* f, const std::string& name, const Profile& p, double lower, double upper) {
+  std::fprintf(f, "# %s\n", name.c_str());
+  const int n = 300;
+  for (int k = -n; k <= n; ++k) {
+    const double t = double(k) / n;
+    const double u = 0.5 * (1 + (t < 0 ? -1 : 1) * (1 - std::pow(10.0, -6 * std::fabs(t))));
+    const double gamma = lower + (upper - lower) * u;
+    const double eps0 = spinslide::terminal_motion(p, gamma).ratio;
+    if (eps0 >= 1e-2 && eps0 <= 1e2) std::fprintf(f, "%.12g,%.12g\n", gamma, eps0);
+  }
+  std::fprintf(f, "\n\n");
 }
 
 }  // namespace
@@ -97,6 +118,19 @@ int main(int argc, char** argv) {
   std::fclose(f);
   std::printf("\nwrote %s\n", csv.c_str());
 
+  const std::string curves = dir + "/regimes_curves.csv";
+  FILE* g = spinslide_examples::open_output(curves, "regimes");
+  if (!g) return 1;
+  std::fprintf(g, "gamma,eps0\n");
+  write_curve(g, cols[0].name, spinslide::uniform_disk<>(), cols[0].lower, cols[0].upper);
+  write_curve(g, cols[1].name, spinslide::annulus<>(0.125), cols[1].lower, cols[1].upper);
+  write_curve(g, cols[2].name, spinslide::annulus<>(0.8), cols[2].lower, cols[2].upper);
+  write_curve(g, cols[3].name, spinslide::hertz<>(), cols[3].lower, cols[3].upper);
+  write_curve(g, cols[4].name, spinslide::boussinesq<>(), cols[4].lower, cols[4].upper);
+  write_curve(g, cols[5].name, spinslide::ring<>(), cols[5].lower, cols[5].upper);
+  std::fclose(g);
+  std::printf("wrote %s (the figure's curves)\n", curves.c_str());
+
   std::string script =
       "set terminal pngcairo size 900,600 font ',11'\n"
       "set output 'regimes.png'\n"
@@ -113,8 +147,8 @@ int main(int argc, char** argv) {
       "set arrow from 0.5,1e-2 to 0.5,1e2 nohead dt 3 lc rgb 'gray'\n"
       "plot ";
   for (std::size_t k = 0; k < cols.size(); ++k)
-    script += (k ? ", " : "") + std::string("'regimes.csv' using 1:") + std::to_string(k + 2) +
-              " with lines lw 2 title '" + cols[k].name + "'";
+    script += (k ? ", " : "") + std::string("'regimes_curves.csv' index ") + std::to_string(k) +
+              " using 1:2 with lines lw 2 title '" + cols[k].name + "'";
   script += "\n";
   if (spinslide_examples::plot(dir, "regimes.gp", script))
     std::printf("wrote %s/regimes.png\n", dir.c_str());
