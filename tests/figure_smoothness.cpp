@@ -21,8 +21,9 @@
 // not judged, for curves that end in a true corner (a throw's path in the
 // (v*, ω*) plane turns onto the terminal ratio's line within a few pixels
 // of the origin, however densely it is sampled).  `stop`: nor are vertices
-// next to a point where y is 0, a time series' true corner where the motion
-// stops (the speed reaches 0 with a finite slope and stays there).
+// closer than END to a point where y is 0, a time series' true corner where
+// the motion stops (the speed reaches 0 with a finite or, for ω ∝
+// √(t_stop − t), an infinite slope, and stays there).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -110,6 +111,14 @@ curve visible(const curve& c, const axis& x, const axis& y) {
   return out;
 }
 
+// True if p lies within `distance` of a point of c where y is 0 (or is
+// next to one).
+bool near_rest(const curve& c, const point& p, double distance) {
+  return std::any_of(c.begin(), c.end(), [&](const point& q) {
+    return q.at_rest && std::hypot(q.x - p.x, q.y - p.y) < std::max(distance, 2.0 / 500);
+  });
+}
+
 double turning_degrees(const point& a, const point& b, const point& c) {
   const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - b.x, vy = c.y - b.y;
   const double cosine = (ux * vx + uy * vy) / (std::hypot(ux, uy) * std::hypot(vx, vy));
@@ -143,7 +152,7 @@ int main(int argc, char** argv) {
     kept += c.size();
     for (std::size_t i = 1; i + 1 < c.size(); ++i) {
       if (std::hypot(c[i].x - c.back().x, c[i].y - c.back().y) < end) continue;
-      if (skip_stop && (c[i - 1].at_rest || c[i].at_rest || c[i + 1].at_rest)) continue;
+      if (skip_stop && near_rest(c, c[i], end)) continue;
       const double angle = turning_degrees(c[i - 1], c[i], c[i + 1]);
       if (angle > worst) {
         worst = angle;

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "../cd_experiment/cd_experiment.hpp"
+#include "../dense_times.hpp"
 #include "../gnuplot.hpp"
 
 namespace {
@@ -130,18 +131,6 @@ void figure2(const output& out) {
 // half evenly in log(t_stop − t) down to 1e-9 of the stop, where ε still
 // moves), so that every curve is smooth at the figure's size (issue 31; the
 // integrator's own steps, about 9 per throw, drew visible corners).
-std::vector<double> sample_times(double stop) {
-  const int half = 300;
-  std::vector<double> t;
-  for (int k = 0; k < half; ++k) t.push_back(stop * k / half);
-  for (int k = 0; k < half; ++k)  // stop − 0.5 stop … stop − 1e-9 stop, geometrically
-    t.push_back(stop - 0.5 * stop * std::pow(2e-9, double(k) / (half - 1)));
-  t.push_back(stop);
-  std::sort(t.begin(), t.end());
-  t.erase(std::unique(t.begin(), t.end()), t.end());
-  return t;
-}
-
 void figure3(const output& out) {
   FILE* f = out.open("fig3_trajectories.csv");
   if (!f) return;
@@ -152,7 +141,8 @@ void figure3(const output& out) {
     const double a = (i + 0.5) / 16 * pi / 2;  // the direction of (v0*, omega0*)
     const double v0 = std::cos(a), w0 = std::sin(a);
     const double stop = spinslide::simulate_throw(disk, 0.5, v0, w0).time;
-    for (const auto& s : spinslide::trajectory(disk, 0.5, v0, w0, sample_times(stop)))
+    for (const auto& s : spinslide::trajectory(
+             disk, 0.5, v0, w0, spinslide_examples::times_towards_stop(stop, stop, 300, 300)))
       std::fprintf(f, "%d,%.9g,%.9g,%.9g,%.9g\n", i, s.time, s.speed, s.spin, s.ratio);
     std::fprintf(f, "\n\n");
     ++n;
