@@ -63,7 +63,9 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
                "Fix wall/gran/spinslide requires atom attributes radius, rmass, omega, "
                "torque (atom_style sphere)");
   for (int iarg = 3; iarg < narg; iarg++) {
-    const std::string why = spinslide_lammps::unsupported_granular_keyword(arg[iarg]);
+    const std::string why = strcmp(arg[iarg], "limit_damping") == 0
+                                ? "supported by pair granular/spinslide, not yet by the wall"
+                                : spinslide_lammps::unsupported_granular_keyword(arg[iarg]);
     if (!why.empty()) error->all(FLERR, "Fix wall/gran/spinslide: {}: {}", arg[iarg], why);
   }
   if (narg < 10) error->all(FLERR, "Illegal fix wall/gran/spinslide command: {}", kSyntax);

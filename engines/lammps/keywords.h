@@ -35,9 +35,8 @@ inline std::string unsupported_granular_keyword(const std::string& key) {
     return "the plugin's contact model is fixed (Hertz with E, nu and eta_n; Mindlin and "
            "Marshall springs; the coupled cap): give the numbers E eta_n nu mu, not LAMMPS' "
            "model keywords (docs/lammps.md)";
-  if (key == "rolling" || key == "limit_damping" || key == "cohesion")
-    return "rolling resistance, cohesion (jkr, dmt) and limit_damping are not supported "
-           "yet (docs/lammps.md)";
+  if (key == "rolling" || key == "cohesion")
+    return "rolling resistance and cohesion (jkr, dmt) are not supported yet (docs/lammps.md)";
   if (key == "zcylinder" || key == "region")
     return "curved and region walls are not supported yet: only xplane, yplane and zplane "
            "(docs/lammps.md)";

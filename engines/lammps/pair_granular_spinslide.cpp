@@ -116,6 +116,7 @@ PairGranularSpinslide::~PairGranularSpinslide() {
     memory->destroy(mu);
     memory->destroy(xgammat);
     memory->destroy(cutoff_type);
+    memory->destroy(limit_damping);
     memory->destroy(kn_hertz);
     memory->destroy(kt_mindlin);
     delete[] onerad_dynamic;
@@ -304,6 +305,7 @@ spinslide_lammps::ContactLaw PairGranularSpinslide::contact_law(int itype, int j
   law.eta_n = eta_n[itype][jtype];
   law.xgammat = xgammat[itype][jtype];
   law.mu = mu[itype][jtype];
+  law.limit_damping = limit_damping[itype][jtype] != 0;
   return law;
 }
 
@@ -370,6 +372,9 @@ void PairGranularSpinslide::allocate() {
   memory->create(mu, n + 1, n + 1, "pair:mu");
   memory->create(xgammat, n + 1, n + 1, "pair:xgammat");
   memory->create(cutoff_type, n + 1, n + 1, "pair:cutoff_type");
+  memory->create(limit_damping, n + 1, n + 1, "pair:limit_damping");
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) limit_damping[i][j] = 0;
   memory->create(kn_hertz, n + 1, n + 1, "pair:kn_hertz");
   memory->create(kt_mindlin, n + 1, n + 1, "pair:kt_mindlin");
   onerad_dynamic = new double[n + 1];
@@ -406,7 +411,38 @@ void PairGranularSpinslide::settings(int narg, char** arg) {
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I J E eta_n nu mu [xgammat x] [cutoff rc]
+   the optional keywords of pair_coeff after E eta_n nu mu
+------------------------------------------------------------------------- */
+
+PairGranularSpinslide::CoeffOptions PairGranularSpinslide::coeff_options(int narg, char** arg) {
+  CoeffOptions opt;
+  for (int iarg = 6; iarg < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "limit_damping") == 0) {  // (no value)
+      opt.limit_damping = true;
+      iarg -= 1;
+      continue;
+    }
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Incorrect args for pair coefficients: {} needs a value", arg[iarg]);
+    if (strcmp(arg[iarg], "xgammat") == 0) {
+      opt.xgammat = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    } else if (strcmp(arg[iarg], "cutoff") == 0) {
+      opt.cutoff = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      // (LAMMPS' granular takes cutoff -1 for automatic; here the automatic
+      // cutoff is the default, and a given one must be a distance.)
+      if (!(opt.cutoff > 0.0))
+        error->all(FLERR,
+                   "pair_coeff granular/spinslide: cutoff must be > 0 (leave it out for the "
+                   "automatic cutoff, the contact distance of the largest spheres)");
+    } else {
+      error->all(FLERR, "Incorrect args for pair coefficients: unknown keyword {}", arg[iarg]);
+    }
+  }
+  return opt;
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J E eta_n nu mu [xgammat x] [cutoff rc] [limit_damping]
 ------------------------------------------------------------------------- */
 
 void PairGranularSpinslide::coeff(int narg, char** arg) {
@@ -417,7 +453,7 @@ void PairGranularSpinslide::coeff(int narg, char** arg) {
   if (narg < 6)
     error->all(FLERR,
                "Incorrect args for pair coefficients: "
-               "pair_coeff I J E eta_n nu mu [xgammat x] [cutoff rc]");
+               "pair_coeff I J E eta_n nu mu [xgammat x] [cutoff rc] [limit_damping]");
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
@@ -428,23 +464,8 @@ void PairGranularSpinslide::coeff(int narg, char** arg) {
   const double eta_one = utils::numeric(FLERR, arg[3], false, lmp);
   const double nu_one = utils::numeric(FLERR, arg[4], false, lmp);
   const double mu_one = utils::numeric(FLERR, arg[5], false, lmp);
-  double xgt_one = 1.0, cut_one = -1.0;
-  for (int iarg = 6; iarg < narg; iarg += 2) {
-    if (iarg + 1 >= narg)
-      error->all(FLERR, "Incorrect args for pair coefficients: {} needs a value", arg[iarg]);
-    if (strcmp(arg[iarg], "xgammat") == 0)
-      xgt_one = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    else if (strcmp(arg[iarg], "cutoff") == 0) {
-      cut_one = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      // (LAMMPS' granular takes cutoff -1 for automatic; here the automatic
-      // cutoff is the default, and a given one must be a distance.)
-      if (!(cut_one > 0.0))
-        error->all(FLERR,
-                   "pair_coeff granular/spinslide: cutoff must be > 0 (leave it out for the "
-                   "automatic cutoff, the contact distance of the largest spheres)");
-    } else
-      error->all(FLERR, "Incorrect args for pair coefficients: unknown keyword {}", arg[iarg]);
-  }
+  const CoeffOptions opt = coeff_options(narg, arg);
+  const double xgt_one = opt.xgammat, cut_one = opt.cutoff;
   if (!(e_one > 0.0)) error->all(FLERR, "pair_coeff granular/spinslide: E must be > 0");
   if (!(nu_one > -1.0 && nu_one <= 0.5))
     error->all(FLERR, "pair_coeff granular/spinslide: nu must be in (-1, 0.5]");
@@ -460,6 +481,7 @@ void PairGranularSpinslide::coeff(int narg, char** arg) {
       mu[i][j] = mu[j][i] = mu_one;
       xgammat[i][j] = xgammat[j][i] = xgt_one;
       cutoff_type[i][j] = cutoff_type[j][i] = cut_one;
+      limit_damping[i][j] = limit_damping[j][i] = opt.limit_damping ? 1 : 0;
       kn_hertz[i][j] = kn_hertz[j][i] = 4.0 / 3.0 * effective_youngs(e_one, nu_one, e_one, nu_one);
       kt_mindlin[i][j] = kt_mindlin[j][i] = 8 * effective_shear(e_one, nu_one, e_one, nu_one);
       setflag[i][j] = 1;
@@ -552,6 +574,9 @@ double PairGranularSpinslide::init_one(int i, int j) {
     mu[i][j] = mu[j][i] = std::sqrt(mu[i][i] * mu[j][j]);
     xgammat[i][j] = xgammat[j][i] = std::sqrt(xgammat[i][i] * xgammat[j][j]);
     cutoff_type[i][j] = cutoff_type[j][i] = -1.0;
+    // (mixed types: limit_damping if either type has it; LAMMPS' own
+    // granular leaves it unset there)
+    limit_damping[i][j] = limit_damping[j][i] = limit_damping[i][i] || limit_damping[j][j];
   }
 
   if (cutoff_type[i][j] > 0.0) return cutoff_type[i][j];

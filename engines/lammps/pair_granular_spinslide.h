@@ -55,6 +55,12 @@ class PairGranularSpinslide : public Pair {
 
  protected:
   void allocate();
+  // pair_coeff's optional keywords.
+  struct CoeffOptions {
+    double xgammat = 1.0, cutoff = -1.0;
+    bool limit_damping = false;
+  };
+  CoeffOptions coeff_options(int narg, char** arg);
   spinslide_lammps::ContactState contact_state(int i, int j, double r) const;
   spinslide_lammps::ContactLaw contact_law(int itype, int jtype) const;
   double dt = 0.0;
@@ -68,6 +74,7 @@ class PairGranularSpinslide : public Pair {
   // per type pair: the pair_coeff inputs ...
   double **youngs = nullptr, **poisson = nullptr, **eta_n = nullptr, **mu = nullptr;
   double **xgammat = nullptr, **cutoff_type = nullptr;
+  int** limit_damping = nullptr;  // 1: the normal force is not below 0
   // ... and the derived constants: (4/3)E* and 8G*
   double **kn_hertz = nullptr, **kt_mindlin = nullptr;
 

@@ -75,11 +75,12 @@ inline double effective_shear(double e1, double nu1, double e2, double nu2) {
 
 /// The constants of one pair of materials.
 struct ContactLaw {
-  double kn = 0.0;       ///< (4/3) E*: F_n = kn d a
-  double kt = 0.0;       ///< 8 G*: k_t = kt a
-  double eta_n = 0.0;    ///< viscoelastic normal damping: gamma_n = eta_n a m*
-  double xgammat = 1.0;  ///< gamma_t = xgammat gamma_n
-  double mu = 0.0;       ///< friction coefficient
+  double kn = 0.0;             ///< (4/3) E*: F_n = kn d a
+  double kt = 0.0;             ///< 8 G*: k_t = kt a
+  double eta_n = 0.0;          ///< viscoelastic normal damping: gamma_n = eta_n a m*
+  double xgammat = 1.0;        ///< gamma_t = xgammat gamma_n
+  double mu = 0.0;             ///< friction coefficient
+  bool limit_damping = false;  ///< the normal force not below 0 (LAMMPS' limit_damping)
 };
 
 /// One contact's geometry and relative motion, seen from the sphere.
@@ -252,7 +253,10 @@ inline void contact_force(const ContactLaw& law, const ContactState& s, double* 
   const double a = std::sqrt(s.delta * s.reff);
   const double fn_elastic = law.kn * s.delta * a;
   const double damp_n = law.eta_n * (a * s.meff);
-  const double fn = fn_elastic + (-damp_n * vnnr);
+  double fn = fn_elastic + (-damp_n * vnnr);
+  // limit_damping: the damping may not pull the spheres together (as
+  // LAMMPS' pair granular, before the friction limit is taken from |F_n|).
+  if (law.limit_damping && fn < 0.0) fn = 0.0;
   const double load_n = std::fabs(fn);
   const double fscrit = law.mu * load_n;
 

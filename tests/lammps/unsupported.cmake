@@ -11,7 +11,7 @@ set(expected
   "pair_coeff granular/spinslide: hertz/material: the plugin's contact model is fixed"
   "pair_coeff granular/spinslide: cutoff must be > 0 \\(leave it out for the automatic cutoff"
   "Fix wall/gran/spinslide: zcylinder: curved and region walls are not supported yet"
-  "pair_coeff granular/spinslide: rolling: rolling resistance, cohesion")
+  "pair_coeff granular/spinslide: rolling: rolling resistance and cohesion")
 set(case 0)
 foreach(message IN LISTS expected)
   math(EXPR case "${case} + 1")
