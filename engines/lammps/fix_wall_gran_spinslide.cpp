@@ -50,7 +50,7 @@ constexpr double kFarAway = 1.0e20;
 
 const char* const kSyntax =
     "fix ID group wall/gran/spinslide E eta_n nu mu [xgammat x] [coupling yes|no] "
-    "[moduli exact|legacy] xplane|yplane|zplane lo hi";
+    "[moduli exact|legacy] [limit_damping] xplane|yplane|zplane lo hi";
 
 }  // namespace
 
@@ -63,9 +63,7 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
                "Fix wall/gran/spinslide requires atom attributes radius, rmass, omega, "
                "torque (atom_style sphere)");
   for (int iarg = 3; iarg < narg; iarg++) {
-    const std::string why = strcmp(arg[iarg], "limit_damping") == 0
-                                ? "supported by pair granular/spinslide, not yet by the wall"
-                                : spinslide_lammps::unsupported_granular_keyword(arg[iarg]);
+    const std::string why = spinslide_lammps::unsupported_granular_keyword(arg[iarg]);
     if (!why.empty()) error->all(FLERR, "Fix wall/gran/spinslide: {}: {}", arg[iarg], why);
   }
   if (narg < 10) error->all(FLERR, "Illegal fix wall/gran/spinslide command: {}", kSyntax);
@@ -130,6 +128,11 @@ int FixWallGranSpinslide::parse_walls_and_options(int narg, char** arg) {
                                               : utils::numeric(FLERR, arg[iarg + 2], false, lmp);
       ++nwalls;
       iarg += 3;
+      continue;
+    }
+    if (key == "limit_damping") {  // (no value)
+      limit_damping = 1;
+      iarg += 1;
       continue;
     }
     if (iarg + 1 >= narg)
@@ -223,6 +226,7 @@ void FixWallGranSpinslide::post_force(int /*vflag*/) {
   law.eta_n = eta_n;
   law.xgammat = xgammat;
   law.mu = mu;
+  law.limit_damping = limit_damping != 0;
 
   for (double& s : stats_local) s = 0.0;
   stats_reduced = 0;

@@ -10,7 +10,7 @@
 /// law of the pair style granular/spinslide (spinslide_contact.h), the wall a
 /// body of infinite radius and mass of the spheres' material.
 ///
-///   fix ID group wall/gran/spinslide E eta_n nu mu [xgammat x]
+///   fix ID group wall/gran/spinslide E eta_n nu mu [xgammat x] [limit_damping]
 ///       [coupling yes|no] [moduli exact|legacy] xplane|yplane|zplane lo hi
 ///
 /// lo, hi: the walls' positions (NULL: no wall on that side).
@@ -62,6 +62,7 @@ class FixWallGranSpinslide : public Fix {
   double hi = 0.0;        // the upper wall (+1e20 for none)
   int coupled = 1;        // 1: the coupled cap (default); 0: independent caps
   int legacy_moduli = 0;  // 1: LAMMPS 2021 fix wall/gran's (4/3)E* and 8G*
+  int limit_damping = 0;  // 1: the normal force not below 0
 
   // the contact law: (4/3)E*, 8G*, eta_n, xgammat, mu
   double kn = 0.0, kt = 0.0, eta_n = 0.0, xgammat = 1.0, mu = 0.0;
