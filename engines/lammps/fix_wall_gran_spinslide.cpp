@@ -152,6 +152,11 @@ void FixWallGranSpinslide::parse_option(const std::string& key, const char* arg)
     coupled = spinslide_lammps::either(value, {"yes", "on"}, {"no", "off"});
     if (coupled < 0)
       error->all(FLERR, "Illegal fix wall/gran/spinslide command: coupling {}", value);
+  } else if (key == "damping") {
+    error->all(FLERR,
+               "Fix wall/gran/spinslide: damping {}: the wall's damping is viscoelastic; damping "
+               "tsuji is supported by pair granular/spinslide, not yet by the wall",
+               value);
   } else if (key == "moduli") {
     legacy_moduli = spinslide_lammps::either(value, {"legacy"}, {"exact"});
     if (legacy_moduli < 0)

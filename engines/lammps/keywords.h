@@ -31,10 +31,10 @@ inline int either(const std::string& value, std::initializer_list<const char*> o
 /// reads what to do instead of "unknown keyword".
 inline std::string unsupported_granular_keyword(const std::string& key) {
   if (key == "hertz" || key == "hertz/material" || key == "dmt" || key == "jkr" || key == "hooke" ||
-      key == "tangential" || key == "twisting" || key == "damping")
+      key == "tangential" || key == "twisting")
     return "the plugin's contact model is fixed (Hertz with E, nu and eta_n; Mindlin and "
            "Marshall springs; the coupled cap): give the numbers E eta_n nu mu, not LAMMPS' "
-           "model keywords (docs/lammps.md)";
+           "model keywords (damping viscoelastic|tsuji is an option; docs/lammps.md)";
   if (key == "rolling" || key == "cohesion")
     return "rolling resistance and cohesion (jkr, dmt) are not supported yet (docs/lammps.md)";
   if (key == "zcylinder" || key == "region")

@@ -117,6 +117,7 @@ PairGranularSpinslide::~PairGranularSpinslide() {
     memory->destroy(xgammat);
     memory->destroy(cutoff_type);
     memory->destroy(limit_damping);
+    memory->destroy(tsuji);
     memory->destroy(kn_hertz);
     memory->destroy(kt_mindlin);
     delete[] onerad_dynamic;
@@ -306,6 +307,7 @@ spinslide_lammps::ContactLaw PairGranularSpinslide::contact_law(int itype, int j
   law.xgammat = xgammat[itype][jtype];
   law.mu = mu[itype][jtype];
   law.limit_damping = limit_damping[itype][jtype] != 0;
+  law.tsuji = tsuji[itype][jtype] != 0;
   return law;
 }
 
@@ -373,8 +375,9 @@ void PairGranularSpinslide::allocate() {
   memory->create(xgammat, n + 1, n + 1, "pair:xgammat");
   memory->create(cutoff_type, n + 1, n + 1, "pair:cutoff_type");
   memory->create(limit_damping, n + 1, n + 1, "pair:limit_damping");
+  memory->create(tsuji, n + 1, n + 1, "pair:tsuji");
   for (int i = 0; i <= n; i++)
-    for (int j = 0; j <= n; j++) limit_damping[i][j] = 0;
+    for (int j = 0; j <= n; j++) limit_damping[i][j] = tsuji[i][j] = 0;
   memory->create(kn_hertz, n + 1, n + 1, "pair:kn_hertz");
   memory->create(kt_mindlin, n + 1, n + 1, "pair:kt_mindlin");
   onerad_dynamic = new double[n + 1];
@@ -424,7 +427,14 @@ PairGranularSpinslide::CoeffOptions PairGranularSpinslide::coeff_options(int nar
     }
     if (iarg + 1 >= narg)
       error->all(FLERR, "Incorrect args for pair coefficients: {} needs a value", arg[iarg]);
-    if (strcmp(arg[iarg], "xgammat") == 0) {
+    if (strcmp(arg[iarg], "damping") == 0) {
+      const int model = spinslide_lammps::either(arg[iarg + 1], {"tsuji"}, {"viscoelastic"});
+      if (model < 0)
+        error->all(FLERR,
+                   "pair_coeff granular/spinslide: damping {}: viscoelastic (default) or tsuji",
+                   arg[iarg + 1]);
+      opt.tsuji = model == 1;
+    } else if (strcmp(arg[iarg], "xgammat") == 0) {
       opt.xgammat = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     } else if (strcmp(arg[iarg], "cutoff") == 0) {
       opt.cutoff = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -442,7 +452,8 @@ PairGranularSpinslide::CoeffOptions PairGranularSpinslide::coeff_options(int nar
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I J E eta_n nu mu [xgammat x] [cutoff rc] [limit_damping]
+   pair_coeff I J E eta_n|e nu mu [xgammat x] [cutoff rc] [limit_damping]
+              [damping viscoelastic|tsuji]
 ------------------------------------------------------------------------- */
 
 void PairGranularSpinslide::coeff(int narg, char** arg) {
@@ -453,7 +464,8 @@ void PairGranularSpinslide::coeff(int narg, char** arg) {
   if (narg < 6)
     error->all(FLERR,
                "Incorrect args for pair coefficients: "
-               "pair_coeff I J E eta_n nu mu [xgammat x] [cutoff rc] [limit_damping]");
+               "pair_coeff I J E eta_n|e nu mu [xgammat x] [cutoff rc] [limit_damping] "
+               "[damping viscoelastic|tsuji]");
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
@@ -466,6 +478,12 @@ void PairGranularSpinslide::coeff(int narg, char** arg) {
   const double mu_one = utils::numeric(FLERR, arg[5], false, lmp);
   const CoeffOptions opt = coeff_options(narg, arg);
   const double xgt_one = opt.xgammat, cut_one = opt.cutoff;
+  // damping tsuji: the second number is a coefficient of restitution.
+  if (opt.tsuji && !(eta_one > 0.0 && eta_one <= 1.0))
+    error->all(FLERR,
+               "pair_coeff granular/spinslide: with damping tsuji, the second number is the "
+               "coefficient of restitution, in (0, 1]");
+  const double damping_one = opt.tsuji ? spinslide_lammps::tsuji_alpha(eta_one) : eta_one;
   if (!(e_one > 0.0)) error->all(FLERR, "pair_coeff granular/spinslide: E must be > 0");
   if (!(nu_one > -1.0 && nu_one <= 0.5))
     error->all(FLERR, "pair_coeff granular/spinslide: nu must be in (-1, 0.5]");
@@ -477,7 +495,8 @@ void PairGranularSpinslide::coeff(int narg, char** arg) {
     for (int j = std::max(jlo, i); j <= jhi; j++) {
       youngs[i][j] = youngs[j][i] = e_one;
       poisson[i][j] = poisson[j][i] = nu_one;
-      eta_n[i][j] = eta_n[j][i] = eta_one;
+      eta_n[i][j] = eta_n[j][i] = damping_one;
+      tsuji[i][j] = tsuji[j][i] = opt.tsuji ? 1 : 0;
       mu[i][j] = mu[j][i] = mu_one;
       xgammat[i][j] = xgammat[j][i] = xgt_one;
       cutoff_type[i][j] = cutoff_type[j][i] = cut_one;
@@ -577,6 +596,12 @@ double PairGranularSpinslide::init_one(int i, int j) {
     // (mixed types: limit_damping if either type has it; LAMMPS' own
     // granular leaves it unset there)
     limit_damping[i][j] = limit_damping[j][i] = limit_damping[i][i] || limit_damping[j][j];
+    if (tsuji[i][i] != tsuji[j][j])
+      error->all(FLERR,
+                 "Pair granular/spinslide: types {} and {} have different damping models; give "
+                 "their pair_coeff",
+                 i, j);
+    tsuji[i][j] = tsuji[j][i] = tsuji[i][i];
   }
 
   if (cutoff_type[i][j] > 0.0) return cutoff_type[i][j];

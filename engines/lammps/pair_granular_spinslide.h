@@ -59,6 +59,7 @@ class PairGranularSpinslide : public Pair {
   struct CoeffOptions {
     double xgammat = 1.0, cutoff = -1.0;
     bool limit_damping = false;
+    bool tsuji = false;  // damping tsuji: eta_n is a coefficient of restitution
   };
   CoeffOptions coeff_options(int narg, char** arg);
   spinslide_lammps::ContactState contact_state(int i, int j, double r) const;
@@ -75,6 +76,7 @@ class PairGranularSpinslide : public Pair {
   double **youngs = nullptr, **poisson = nullptr, **eta_n = nullptr, **mu = nullptr;
   double **xgammat = nullptr, **cutoff_type = nullptr;
   int** limit_damping = nullptr;  // 1: the normal force is not below 0
+  int** tsuji = nullptr;          // 1: damping tsuji (eta_n holds alpha(e))
   // ... and the derived constants: (4/3)E* and 8G*
   double **kn_hertz = nullptr, **kt_mindlin = nullptr;
 
