@@ -49,8 +49,9 @@ namespace {
 constexpr double kFarAway = 1.0e20;
 
 const char* const kSyntax =
-    "fix ID group wall/gran/spinslide E eta_n nu mu [xgammat x] [coupling yes|no] "
-    "[moduli exact|legacy] [limit_damping] xplane|yplane|zplane lo hi";
+    "fix ID group wall/gran/spinslide E eta_n|e nu mu [xgammat x] [coupling yes|no] "
+    "[moduli exact|legacy] [limit_damping] [damping viscoelastic|tsuji] xplane|yplane|zplane lo "
+    "hi";
 
 }  // namespace
 
@@ -81,6 +82,14 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
                "Illegal fix wall/gran/spinslide command: give one of xplane, yplane, "
                "zplane lo hi");
   check_parameters(e_one, nu_one);
+  if (tsuji) {
+    // damping tsuji: the second number is a coefficient of restitution.
+    if (!(eta_n > 0.0 && eta_n <= 1.0))
+      error->all(FLERR,
+                 "Fix wall/gran/spinslide: with damping tsuji, the second number is the "
+                 "coefficient of restitution, in (0, 1]");
+    eta_n = spinslide_lammps::tsuji_alpha_by_pow(eta_n);
+  }
 
   if (legacy_moduli) {
     // LAMMPS 29 Sep 2021 fix wall/gran's `hertz/material` and `mindlin NULL`
@@ -153,10 +162,10 @@ void FixWallGranSpinslide::parse_option(const std::string& key, const char* arg)
     if (coupled < 0)
       error->all(FLERR, "Illegal fix wall/gran/spinslide command: coupling {}", value);
   } else if (key == "damping") {
-    error->all(FLERR,
-               "Fix wall/gran/spinslide: damping {}: the wall's damping is viscoelastic; damping "
-               "tsuji is supported by pair granular/spinslide, not yet by the wall",
-               value);
+    tsuji = spinslide_lammps::either(value, {"tsuji"}, {"viscoelastic"});
+    if (tsuji < 0)
+      error->all(FLERR, "Fix wall/gran/spinslide: damping {}: viscoelastic (default) or tsuji",
+                 value);
   } else if (key == "moduli") {
     legacy_moduli = spinslide_lammps::either(value, {"legacy"}, {"exact"});
     if (legacy_moduli < 0)
@@ -232,6 +241,7 @@ void FixWallGranSpinslide::post_force(int /*vflag*/) {
   law.xgammat = xgammat;
   law.mu = mu;
   law.limit_damping = limit_damping != 0;
+  law.tsuji = tsuji != 0;
 
   for (double& s : stats_local) s = 0.0;
   stats_reduced = 0;

@@ -63,6 +63,7 @@ class FixWallGranSpinslide : public Fix {
   int coupled = 1;        // 1: the coupled cap (default); 0: independent caps
   int legacy_moduli = 0;  // 1: LAMMPS 2021 fix wall/gran's (4/3)E* and 8G*
   int limit_damping = 0;  // 1: the normal force not below 0
+  int tsuji = 0;          // 1: damping tsuji (eta_n holds alpha(e))
 
   // the contact law: (4/3)E*, 8G*, eta_n, xgammat, mu
   double kn = 0.0, kt = 0.0, eta_n = 0.0, xgammat = 1.0, mu = 0.0;

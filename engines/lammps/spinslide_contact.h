@@ -94,6 +94,14 @@ inline double tsuji_alpha(double e) {
   return 1.2728 - 4.2783 * e + 11.087 * e2 - 22.348 * e3 + 27.467 * e4 - 18.022 * e5 + 4.8218 * e6;
 }
 
+/// The same fit with the powers by std::pow, as LAMMPS' fix wall/gran
+/// evaluates it (the last bits may differ from tsuji_alpha; each reproduces
+/// its own LAMMPS style).
+inline double tsuji_alpha_by_pow(double e) {
+  return 1.2728 - 4.2783 * e + 11.087 * std::pow(e, 2) - 22.348 * std::pow(e, 3) +
+         27.467 * std::pow(e, 4) - 18.022 * std::pow(e, 5) + 4.8218 * std::pow(e, 6);
+}
+
 /// One contact's geometry and relative motion, seen from the sphere.
 struct ContactState {
   double n[3];        ///< unit normal, from the partner to the sphere

@@ -12,7 +12,7 @@ set(expected
   "pair_coeff granular/spinslide: cutoff must be > 0 \\(leave it out for the automatic cutoff"
   "Fix wall/gran/spinslide: zcylinder: curved and region walls are not supported yet"
   "pair_coeff granular/spinslide: rolling: rolling resistance and cohesion"
-  "Fix wall/gran/spinslide: damping tsuji: the wall's damping is viscoelastic"
+  "Fix wall/gran/spinslide: with damping tsuji, the second number is the coefficient of restitution"
   "pair_coeff granular/spinslide: with damping tsuji, the second number is the coefficient of restitution")
 set(case 0)
 foreach(message IN LISTS expected)
