@@ -48,8 +48,8 @@ std::string number(double x) { return py::repr(py::float_(x)); }
 
 // float32 in: the float64 result rounded to float32 (the profiles compute in
 // float64); otherwise the float64 result.
-py::object like_input(py::handle eps, py::object result) {
-  if (!is_float32(as_array(eps, "eps"))) return result;
+py::object like_input(const py::array& eps, py::object result) {
+  if (!is_float32(eps)) return result;
   if (py::isinstance<py::tuple>(result)) {
     py::tuple t = result;
     py::tuple out(t.size());
@@ -124,13 +124,14 @@ double slope(const P& p, double eps) {
 // f(profile, eps) over an array of ratios, in float64.
 template <std::size_t N, class F>
 py::object over_ratios(const profile_handle& h, py::handle eps, F f) {
-  return like_input(
-      eps, map_doubles<N>(eps, "eps",
-                          [&h, f](const double* in, std::size_t n, std::array<double*, N> out) {
-                            visit(h, [&](const auto& p) {
-                              for (std::size_t i = 0; i < n; ++i) f(p, in[i], out, i);
-                            });
-                          }));
+  // The input read once: its dtype decides the output's.
+  const py::array ratios = as_array(eps, "eps");
+  auto body = [&h, f](const double* in, std::size_t n, std::array<double*, N> out) {
+    visit(h, [&](const auto& p) {
+      for (std::size_t i = 0; i < n; ++i) f(p, in[i], out, i);
+    });
+  };
+  return like_input(ratios, map_typed<double, N>(ratios, body));
 }
 
 const char* const eps_doc =

@@ -52,13 +52,16 @@ class runtime_weighted_sum : public spinslide::profile_base<runtime_weighted_sum
   friend class spinslide::profile_base<runtime_weighted_sum, double,
                                        boost::math::policies::policy<>>;
   static constexpr const char* name = "spinslide.WeightedSum";
+  // Σ wᵢ𝓕ᵢ and Σ wᵢ𝓣ᵢ in the order of the parts, each part evaluated once,
+  // without allocating (the terms of each sum are added in weighted_sum's
+  // order, so the results are its own).
   force_torque_result<double> general(double eps) const {
-    std::vector<force_torque_result<double>> at;
-    at.reserve(parts_.size());
-    for (const auto& p : parts_) at.push_back(p.force_torque(eps));
     force_torque_result<double> r{0, 0};
-    for (std::size_t i = 0; i < at.size(); ++i) r.force += w_[i] * at[i].force;
-    for (std::size_t i = 0; i < at.size(); ++i) r.torque += w_[i] * at[i].torque;
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+      const auto ft = parts_[i].force_torque(eps);
+      r.force += w_[i] * ft.force;
+      r.torque += w_[i] * ft.torque;
+    }
     return r;
   }
   template <class F>
