@@ -48,10 +48,14 @@ namespace {
 // A wall given as NULL sits this far away.
 constexpr double kFarAway = 1.0e20;
 
-const char* const kSyntax =
-    "fix ID group wall/gran/spinslide E eta_n|e nu mu [xgammat x] [coupling yes|no] "
-    "[moduli exact|legacy] [limit_damping] [damping viscoelastic|tsuji] xplane|yplane|zplane lo "
-    "hi";
+// The command's syntax, for messages.
+std::string syntax(bool region_style) {
+  return std::string(region_style ? "fix ID group wall/gran/region/spinslide"
+                                  : "fix ID group wall/gran/spinslide") +
+         " E eta_n|e nu mu [xgammat x] [coupling yes|no] [moduli exact|legacy] [limit_damping] "
+         "[damping viscoelastic|tsuji] " +
+         (region_style ? "region ID" : "xplane|yplane|zplane lo hi | zcylinder radius");
+}
 
 }  // namespace
 
@@ -59,15 +63,20 @@ const char* const kSyntax =
 
 FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
     : Fix(lmp, narg, arg) {
+  const bool region_style = utils::strmatch(style, "region");
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     error->all(FLERR,
-               "Fix wall/gran/spinslide requires atom attributes radius, rmass, omega, "
-               "torque (atom_style sphere)");
+               "Fix {} requires atom attributes radius, rmass, omega, torque (atom_style sphere)",
+               style);
   for (int iarg = 3; iarg < narg; iarg++) {
-    const std::string why = spinslide_lammps::unsupported_granular_keyword(arg[iarg]);
-    if (!why.empty()) error->all(FLERR, "Fix wall/gran/spinslide: {}: {}", arg[iarg], why);
+    const std::string key = arg[iarg];
+    if (key == "region" && !region_style)
+      error->all(FLERR, "Fix {}: region: a region wall is fix wall/gran/region/spinslide", style);
+    if (key == "region" || key == "zcylinder") continue;
+    const std::string why = spinslide_lammps::unsupported_granular_keyword(key);
+    if (!why.empty()) error->all(FLERR, "Fix {}: {}: {}", style, key, why);
   }
-  if (narg < 10) error->all(FLERR, "Illegal fix wall/gran/spinslide command: {}", kSyntax);
+  if (narg < 9) error->all(FLERR, "Illegal fix {} command: {}", style, syntax(region_style));
 
   const double e_one = utils::numeric(FLERR, arg[3], false, lmp);
   eta_n = utils::numeric(FLERR, arg[4], false, lmp);
@@ -77,17 +86,16 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
   coupled = 1;
   legacy_moduli = 0;
 
-  if (parse_walls_and_options(narg, arg) != 1)
-    error->all(FLERR,
-               "Illegal fix wall/gran/spinslide command: give one of xplane, yplane, "
-               "zplane lo hi");
+  if (parse_walls_and_options(narg, arg) != 1 || (wallstyle == WallStyle::kRegion) != region_style)
+    error->all(FLERR, "Illegal fix {} command: give one wall: {}", style, syntax(region_style));
   check_parameters(e_one, nu_one);
   if (tsuji) {
     // damping tsuji: the second number is a coefficient of restitution.
     if (!(eta_n > 0.0 && eta_n <= 1.0))
       error->all(FLERR,
-                 "Fix wall/gran/spinslide: with damping tsuji, the second number is the "
-                 "coefficient of restitution, in (0, 1]");
+                 "Fix {}: with damping tsuji, the second number is the coefficient of "
+                 "restitution, in (0, 1]",
+                 style);
     eta_n = spinslide_lammps::tsuji_alpha_by_pow(eta_n);
   }
 
@@ -113,23 +121,24 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nlocal; i++)
-    for (int k = 0; k < kHistSize; k++) history[i][k] = 0.0;
+  if (history)
+    for (int i = 0; i < atom->nlocal; i++)
+      for (int k = 0; k < kHistSize; k++) history[i][k] = 0.0;
 
   dt = update->dt;
 }
 
-/* ---------------------------------------------------------------------- */
-
-// The keywords after the four numbers: the wall (xplane|yplane|zplane lo hi)
-// and the options; returns how many walls were given.
+// The keywords after the four numbers: the wall (xplane|yplane|zplane lo
+// hi, zcylinder radius, region ID) and the options; returns how many walls
+// were given.
 int FixWallGranSpinslide::parse_walls_and_options(int narg, char** arg) {
   int nwalls = 0;
   for (int iarg = 7; iarg < narg;) {
     const std::string key = arg[iarg];
     if (key == "xplane" || key == "yplane" || key == "zplane") {
       if (iarg + 2 >= narg)
-        error->all(FLERR, "Illegal fix wall/gran/spinslide command: {} needs lo and hi", key);
+        error->all(FLERR, "Illegal fix {} command: {} needs lo and hi", style, key);
+      wallstyle = WallStyle::kPlane;
       axis = key[0] - 'x';
       lo = strcmp(arg[iarg + 1], "NULL") == 0 ? -kFarAway
                                               : utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -144,9 +153,18 @@ int FixWallGranSpinslide::parse_walls_and_options(int narg, char** arg) {
       iarg += 1;
       continue;
     }
-    if (iarg + 1 >= narg)
-      error->all(FLERR, "Illegal fix wall/gran/spinslide command: {} needs a value", key);
-    parse_option(key, arg[iarg + 1]);
+    if (iarg + 1 >= narg) error->all(FLERR, "Illegal fix {} command: {} needs a value", style, key);
+    if (key == "zcylinder") {
+      wallstyle = WallStyle::kZCylinder;
+      cylradius = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      ++nwalls;
+    } else if (key == "region") {
+      wallstyle = WallStyle::kRegion;
+      idregion = arg[iarg + 1];
+      ++nwalls;
+    } else {
+      parse_option(key, arg[iarg + 1]);
+    }
     iarg += 2;
   }
   return nwalls;
@@ -159,33 +177,40 @@ void FixWallGranSpinslide::parse_option(const std::string& key, const char* arg)
     xgammat = utils::numeric(FLERR, arg, false, lmp);
   } else if (key == "coupling") {
     coupled = spinslide_lammps::either(value, {"yes", "on"}, {"no", "off"});
-    if (coupled < 0)
-      error->all(FLERR, "Illegal fix wall/gran/spinslide command: coupling {}", value);
+    if (coupled < 0) error->all(FLERR, "Illegal fix {} command: coupling {}", style, value);
   } else if (key == "damping") {
     tsuji = spinslide_lammps::either(value, {"tsuji"}, {"viscoelastic"});
     if (tsuji < 0)
-      error->all(FLERR, "Fix wall/gran/spinslide: damping {}: viscoelastic (default) or tsuji",
-                 value);
+      error->all(FLERR, "Fix {}: damping {}: viscoelastic (default) or tsuji", style, value);
   } else if (key == "moduli") {
     legacy_moduli = spinslide_lammps::either(value, {"legacy"}, {"exact"});
-    if (legacy_moduli < 0)
-      error->all(FLERR, "Illegal fix wall/gran/spinslide command: moduli {}", value);
+    if (legacy_moduli < 0) error->all(FLERR, "Illegal fix {} command: moduli {}", style, value);
   } else {
-    error->all(FLERR, "Illegal fix wall/gran/spinslide command: unknown keyword {} ({})", key,
-               kSyntax);
+    error->all(FLERR, "Illegal fix {} command: unknown keyword {} ({})", style, key,
+               syntax(wallstyle == WallStyle::kRegion));
   }
 }
 
 // The material and the walls, checked.
 void FixWallGranSpinslide::check_parameters(double e_one, double nu_one) {
-  if (!(e_one > 0.0)) error->all(FLERR, "Fix wall/gran/spinslide: E must be > 0");
+  if (!(e_one > 0.0)) error->all(FLERR, "Fix {}: E must be > 0", style);
   if (!(nu_one > -1.0 && nu_one <= 0.5))
-    error->all(FLERR, "Fix wall/gran/spinslide: nu must be in (-1, 0.5]");
+    error->all(FLERR, "Fix {}: nu must be in (-1, 0.5]", style);
   if (!(eta_n >= 0.0) || !(mu >= 0.0) || !(xgammat >= 0.0))
-    error->all(FLERR, "Fix wall/gran/spinslide: eta_n, mu and xgammat must be >= 0");
-  if (!(lo < hi)) error->all(FLERR, "Fix wall/gran/spinslide: the walls need lo < hi");
-  if (domain->periodicity[axis])
-    error->all(FLERR, "Fix wall/gran/spinslide: no wall in a periodic dimension");
+    error->all(FLERR, "Fix {}: eta_n, mu and xgammat must be >= 0", style);
+  if (wallstyle == WallStyle::kPlane) {
+    if (!(lo < hi)) error->all(FLERR, "Fix {}: the walls need lo < hi", style);
+    if (domain->periodicity[axis])
+      error->all(FLERR, "Fix {}: no wall in a periodic dimension", style);
+  } else if (wallstyle == WallStyle::kZCylinder) {
+    if (!(cylradius > 0.0)) error->all(FLERR, "Fix {}: the cylinder's radius must be > 0", style);
+    if (domain->xperiodic || domain->yperiodic)
+      error->all(FLERR, "Fix {}: a zcylinder wall needs x and y not periodic", style);
+  } else if (domain->find_region(idregion) < 0) {
+    // (here, not in the region fix's constructor: an error after the base
+    // registered its per-atom callbacks would fail to unregister them)
+    error->all(FLERR, "Fix {}: region {} does not exist", style, idregion);
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -205,10 +230,10 @@ int FixWallGranSpinslide::setmask() { return POST_FORCE; }
 void FixWallGranSpinslide::init() {
   dt = update->dt;
   if (!utils::strmatch(update->integrate_style, "^verlet"))
-    error->all(FLERR, "Fix wall/gran/spinslide supports run_style verlet only");
+    error->all(FLERR, "Fix {} supports run_style verlet only", style);
   for (int i = 0; i < modify->nfix; i++)
     if (modify->fix[i]->rigid_flag)
-      error->all(FLERR, "Fix wall/gran/spinslide does not support rigid bodies yet");
+      error->all(FLERR, "Fix {} does not support rigid bodies yet", style);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -221,19 +246,7 @@ void FixWallGranSpinslide::reset_dt() { dt = update->dt; }
 
 /* ---------------------------------------------------------------------- */
 
-void FixWallGranSpinslide::post_force(int /*vflag*/) {
-  double** x = atom->x;
-  double** v = atom->v;
-  double** f = atom->f;
-  double** omega = atom->omega;
-  double** torque = atom->torque;
-  const double* radius = atom->radius;
-  const double* rmass = atom->rmass;
-  const int* mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  // setup() computes forces without advancing the springs
-  const bool advance = update->setupflag == 0;
-
+spinslide_lammps::ContactLaw FixWallGranSpinslide::contact_law() const {
   spinslide_lammps::ContactLaw law;
   law.kn = kn;
   law.kt = kt;
@@ -242,72 +255,114 @@ void FixWallGranSpinslide::post_force(int /*vflag*/) {
   law.mu = mu;
   law.limit_damping = limit_damping != 0;
   law.tsuji = tsuji != 0;
+  return law;
+}
 
+void FixWallGranSpinslide::clear_statistics() {
   for (double& s : stats_local) s = 0.0;
   stats_reduced = 0;
+}
+
+/* ----------------------------------------------------------------------
+   sphere i against the wall at `touch`: the effective radius as LAMMPS'
+   fix wall/gran takes it (R* = r_i on a flat wall, r_i r_w/(r_i + r_w) on
+   one of curvature radius r_w), the velocity relative to the wall's
+   surface, the spin about the normal (the wall does not spin)
+------------------------------------------------------------------------- */
+
+void FixWallGranSpinslide::apply_contact(int i, const WallTouch& touch, double* h,
+                                         const spinslide_lammps::ContactLaw& law, bool advance) {
+  double** v = atom->v;
+  double** f = atom->f;
+  double** omega = atom->omega;
+  double** torque = atom->torque;
+  const double radi = atom->radius[i];
+  const double* d = touch.d;
+
+  const double dist = std::sqrt(touch.rsq);
+  const double inv = 1.0 / dist;
+  spinslide_lammps::ContactState state;
+  state.n[0] = d[0] * inv;
+  state.n[1] = d[1] * inv;
+  state.n[2] = d[2] * inv;
+  state.delta = radi - dist;
+  state.reff = touch.rwall == 0.0 ? radi : radi * touch.rwall / (radi + touch.rwall);
+  state.meff = atom->rmass[i];
+  for (int k = 0; k < 3; ++k) {
+    state.vr[k] = v[i][k] - touch.vwall[k];
+    state.wr[k] = radi * omega[i][k];
+  }
+  const double nx = state.n[0], ny = state.n[1], nz = state.n[2];
+  state.twist_rate = omega[i][0] * nx + omega[i][1] * ny + omega[i][2] * nz;
+
+  spinslide_lammps::ContactForce cf;
+  spinslide_lammps::contact_force(law, state, h, dt, advance, coupled != 0, error, style, cf);
+  const double* fs = cf.fs;
+
+  stats_local[kStatContacts] += 1.0;
+  if (cf.capped) stats_local[kStatSliding] += 1.0;
+  stats_local[kStatForce] += std::sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
+  stats_local[kStatTorque] += std::fabs(cf.mt);
+
+  // the normal force and the friction, which acts at r_i from the centre
+  f[i][0] += nx * cf.fn + fs[0];
+  f[i][1] += ny * cf.fn + fs[1];
+  f[i][2] += nz * cf.fn + fs[2];
+  const double tor1 = ny * fs[2] - nz * fs[1];
+  const double tor2 = nz * fs[0] - nx * fs[2];
+  const double tor3 = nx * fs[1] - ny * fs[0];
+  torque[i][0] -= radi * tor1;
+  torque[i][1] -= radi * tor2;
+  torque[i][2] -= radi * tor3;
+  torque[i][0] += cf.mt * nx;
+  torque[i][1] += cf.mt * ny;
+  torque[i][2] += cf.mt * nz;
+}
+
+/* ----------------------------------------------------------------------
+   the planes: the signed distance from the nearer wall (positive above lo,
+   negative below hi); the z cylinder: the vector from the nearest point of
+   its surface, the curvature radius -2R inside it and 2R outside (LAMMPS'
+   fix wall/gran convention, kept for identical results)
+------------------------------------------------------------------------- */
+
+void FixWallGranSpinslide::post_force(int /*vflag*/) {
+  double** x = atom->x;
+  const double* radius = atom->radius;
+  const int* mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  // setup() computes forces without advancing the springs
+  const bool advance = update->setupflag == 0;
+  const spinslide_lammps::ContactLaw law = contact_law();
+  clear_statistics();
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-
-    // the signed distance from the nearer wall (positive above lo, negative
-    // below hi), and the squared distance
-    const double above_lo = x[i][axis] - lo;
-    const double below_hi = hi - x[i][axis];
-    const double s = above_lo < below_hi ? above_lo : -below_hi;
-    double d[3] = {0.0, 0.0, 0.0};
-    d[axis] = s;
-    const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
     const double radi = radius[i];
     double* h = history[i];
-
-    if (rsq > radi * radi) {
+    WallTouch touch{{0.0, 0.0, 0.0}, 0.0, 0.0, {0.0, 0.0, 0.0}};
+    bool near = true;
+    if (wallstyle == WallStyle::kPlane) {
+      const double above_lo = x[i][axis] - lo;
+      const double below_hi = hi - x[i][axis];
+      touch.d[axis] = above_lo < below_hi ? above_lo : -below_hi;
+    } else {
+      const double delxy = std::sqrt(x[i][0] * x[i][0] + x[i][1] * x[i][1]);
+      const double delr = cylradius - delxy;
+      near = delr <= radi;
+      if (near) {
+        touch.d[0] = -delr / delxy * x[i][0];
+        touch.d[1] = -delr / delxy * x[i][1];
+        touch.rwall = delxy < cylradius ? -2 * cylradius : 2 * cylradius;
+      }
+    }
+    touch.rsq = touch.d[0] * touch.d[0] + touch.d[1] * touch.d[1] + touch.d[2] * touch.d[2];
+    if (!near || touch.rsq > radi * radi) {
       // apart: forget the contact
       for (int k = 0; k < kHistSize; k++) h[k] = 0.0;
       continue;
     }
-
-    const double dist = std::sqrt(rsq);
-    const double inv = 1.0 / dist;
-    spinslide_lammps::ContactState state;
-    state.n[0] = d[0] * inv;
-    state.n[1] = d[1] * inv;
-    state.n[2] = d[2] * inv;
-    state.delta = radi - dist;
-    state.reff = radi;
-    state.meff = rmass[i];
-    // the wall is at rest and does not spin
-    state.vr[0] = v[i][0];
-    state.vr[1] = v[i][1];
-    state.vr[2] = v[i][2];
-    state.wr[0] = radi * omega[i][0];
-    state.wr[1] = radi * omega[i][1];
-    state.wr[2] = radi * omega[i][2];
-    const double nx = state.n[0], ny = state.n[1], nz = state.n[2];
-    state.twist_rate = omega[i][0] * nx + omega[i][1] * ny + omega[i][2] * nz;
-
-    spinslide_lammps::ContactForce cf;
-    spinslide_lammps::contact_force(law, state, h, dt, advance, coupled != 0, error,
-                                    "fix wall/gran/spinslide", cf);
-    const double* fs = cf.fs;
-
-    stats_local[kStatContacts] += 1.0;
-    if (cf.capped) stats_local[kStatSliding] += 1.0;
-    stats_local[kStatForce] += std::sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
-    stats_local[kStatTorque] += std::fabs(cf.mt);
-
-    // the normal force and the friction, which acts at r_i from the centre
-    f[i][0] += nx * cf.fn + fs[0];
-    f[i][1] += ny * cf.fn + fs[1];
-    f[i][2] += nz * cf.fn + fs[2];
-    const double tor1 = ny * fs[2] - nz * fs[1];
-    const double tor2 = nz * fs[0] - nx * fs[2];
-    const double tor3 = nx * fs[1] - ny * fs[0];
-    torque[i][0] -= radi * tor1;
-    torque[i][1] -= radi * tor2;
-    torque[i][2] -= radi * tor3;
-    torque[i][0] += cf.mt * nx;
-    torque[i][1] += cf.mt * ny;
-    torque[i][2] += cf.mt * nz;
+    apply_contact(i, touch, h, law, advance);
   }
 }
 

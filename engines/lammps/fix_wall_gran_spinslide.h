@@ -6,20 +6,25 @@
 //  inside LAMMPS, which is GPL-2.0: the binary is GPL-2.0 (README.md).
 //
 /// \file fix_wall_gran_spinslide.h
-/// The LAMMPS fix wall/gran/spinslide: flat granular walls with the contact
-/// law of the pair style granular/spinslide (spinslide_contact.h), the wall a
-/// body of infinite radius and mass of the spheres' material.
+/// The LAMMPS fix wall/gran/spinslide: granular walls (planes and a z
+/// cylinder) with the contact law of the pair style granular/spinslide
+/// (spinslide_contact.h), the wall a body of infinite mass of the spheres'
+/// material.
 ///
 ///   fix ID group wall/gran/spinslide E eta_n nu mu [xgammat x] [limit_damping]
-///       [coupling yes|no] [moduli exact|legacy] xplane|yplane|zplane lo hi
+///       [damping viscoelastic|tsuji] [coupling yes|no] [moduli exact|legacy]
+///       xplane|yplane|zplane lo hi  |  zcylinder radius
 ///
-/// lo, hi: the walls' positions (NULL: no wall on that side).
+/// lo, hi: the walls' positions (NULL: no wall on that side); radius: a
+/// cylinder about the z axis through x = y = 0.  FixWallGranRegionSpinslide
+/// (fix_wall_gran_region_spinslide.h) takes a region instead.
 /// engines/lammps/README.md documents the syntax and the model.
 
 #ifndef SPINSLIDE_LAMMPS_FIX_WALL_GRAN_SPINSLIDE_H
 #define SPINSLIDE_LAMMPS_FIX_WALL_GRAN_SPINSLIDE_H
 
 #include "fix.h"
+#include "spinslide_contact.h"
 
 #include <string>
 
@@ -53,17 +58,44 @@ class FixWallGranSpinslide : public Fix {
   enum : int { kStatContacts = 0, kStatSliding, kStatForce, kStatTorque, kStatSize };
 
  protected:
+  /// Which wall: a pair of planes, a z cylinder, or a region (the derived
+  /// fix wall/gran/region/spinslide).
+  enum class WallStyle { kPlane, kZCylinder, kRegion };
+
+  /// Where sphere i touches a wall: the vector from the wall's nearest
+  /// point to the centre and its squared length (as the wall computes it),
+  /// the wall's radius of curvature there (0: flat; LAMMPS' sign
+  /// convention, negative inside a concave wall) and the velocity of the
+  /// wall's surface at the contact.
+  struct WallTouch {
+    double d[3];
+    double rsq;
+    double rwall;
+    double vwall[3];
+  };
+
   int parse_walls_and_options(int narg, char** arg);
   void parse_option(const std::string& key, const char* arg);
   void check_parameters(double e_one, double nu_one);
+  /// The law of the wall's contacts (the fix's constants).
+  spinslide_lammps::ContactLaw contact_law() const;
+  /// Zeroes the statistics of the step (post_force's start).
+  void clear_statistics();
+  /// Sphere i's contact `touch` with history h (kHistSize values): the forces
+  /// and torques added to i, the statistics counted.
+  void apply_contact(int i, const WallTouch& touch, double* h,
+                     const spinslide_lammps::ContactLaw& law, bool advance);
 
-  int axis = 2;           // the walls' normal: 0 x, 1 y, 2 z
-  double lo = 0.0;        // the lower wall (-1e20 for none)
-  double hi = 0.0;        // the upper wall (+1e20 for none)
-  int coupled = 1;        // 1: the coupled cap (default); 0: independent caps
-  int legacy_moduli = 0;  // 1: LAMMPS 2021 fix wall/gran's (4/3)E* and 8G*
-  int limit_damping = 0;  // 1: the normal force not below 0
-  int tsuji = 0;          // 1: damping tsuji (eta_n holds alpha(e))
+  WallStyle wallstyle = WallStyle::kPlane;
+  int axis = 2;            // the planes' normal: 0 x, 1 y, 2 z
+  double lo = 0.0;         // the lower plane (-1e20 for none)
+  double hi = 0.0;         // the upper plane (+1e20 for none)
+  double cylradius = 0.0;  // the z cylinder's radius
+  std::string idregion;    // the region (wall/gran/region/spinslide)
+  int coupled = 1;         // 1: the coupled cap (default); 0: independent caps
+  int legacy_moduli = 0;   // 1: LAMMPS 2021 fix wall/gran's (4/3)E* and 8G*
+  int limit_damping = 0;   // 1: the normal force not below 0
+  int tsuji = 0;           // 1: damping tsuji (eta_n holds alpha(e))
 
   // the contact law: (4/3)E*, 8G*, eta_n, xgammat, mu
   double kn = 0.0, kt = 0.0, eta_n = 0.0, xgammat = 1.0, mu = 0.0;

@@ -37,9 +37,6 @@ inline std::string unsupported_granular_keyword(const std::string& key) {
            "model keywords (damping viscoelastic|tsuji is an option; docs/lammps.md)";
   if (key == "rolling" || key == "cohesion")
     return "rolling resistance and cohesion (jkr, dmt) are not supported yet (docs/lammps.md)";
-  if (key == "zcylinder" || key == "region")
-    return "curved and region walls are not supported yet: only xplane, yplane and zplane "
-           "(docs/lammps.md)";
   if (key == "wiggle" || key == "shear" || key == "contacts" || key == "temperature")
     return "moving walls, per-contact output and heat conduction of fix wall/gran are not "
            "supported: the wall is fixed in space";

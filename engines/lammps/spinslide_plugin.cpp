@@ -14,6 +14,7 @@
 #include "version.h"
 
 #include "fix_spinslide_history.h"
+#include "fix_wall_gran_region_spinslide.h"
 #include "fix_wall_gran_spinslide.h"
 #include "pair_granular_spinslide.h"
 
@@ -27,6 +28,10 @@ void* create_pair_granular_spinslide(void* lmp) {
 
 void* create_fix_wall_gran_spinslide(void* lmp, int argc, char** argv) {
   return new FixWallGranSpinslide(static_cast<LAMMPS*>(lmp), argc, argv);
+}
+
+void* create_fix_wall_gran_region_spinslide(void* lmp, int argc, char** argv) {
+  return new FixWallGranRegionSpinslide(static_cast<LAMMPS*>(lmp), argc, argv);
 }
 
 void* create_fix_spinslide_history(void* lmp, int argc, char** argv) {
@@ -52,9 +57,16 @@ extern "C" void lammpsplugin_init(void* lmp, void* handle, void* regfunc) {
   plugin.style = "fix";
   plugin.name = "wall/gran/spinslide";
   plugin.info =
-      "Flat granular walls with the Hertz-Mindlin-Marshall contacts of granular/spinslide "
-      "(spinslide, Coulomb-Contensou) v0.1";
+      "Granular plane and z-cylinder walls with the Hertz-Mindlin-Marshall contacts of "
+      "granular/spinslide (spinslide, Coulomb-Contensou) v0.1";
   plugin.creator.v2 = &create_fix_wall_gran_spinslide;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "wall/gran/region/spinslide";
+  plugin.info =
+      "Granular walls on any region's surface, moving and rotating, with the contacts of "
+      "granular/spinslide (spinslide, Coulomb-Contensou) v0.1";
+  plugin.creator.v2 = &create_fix_wall_gran_region_spinslide;
   (*register_plugin)(&plugin, lmp);
 
   // The pair style's own history fix (fix_spinslide_history.h); not for inputs.

@@ -6,7 +6,10 @@
 # first half again with LAMMPS' own granular styles: the reading log must
 # carry granular/spinslide's warning that the file holds none of its history.
 #   cmake -DLMP=... -DPLUGIN=... -DINPUT=... -DCOMPARE=... -DDIR=...
-#         [-DNP=2 -DMPIEXEC=mpirun] [-DCOUPLING=yes] -P restart.cmake
+#         [-DNP=2 -DMPIEXEC=mpirun] [-DCOUPLING=yes] [-DWALL=drum] -P restart.cmake
+# WALL=drum: the spheres in a turning drum (fix wall/gran/region/spinslide);
+# the reading log must also say that the wall's contacts and the region's
+# motion were restored (no run with LAMMPS' own styles then).
 foreach(var LMP PLUGIN INPUT COMPARE DIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "restart.cmake: pass -D${var}=...")
@@ -14,6 +17,9 @@ foreach(var LMP PLUGIN INPUT COMPARE DIR)
 endforeach()
 if(NOT DEFINED COUPLING)
   set(COUPLING yes)
+endif()
+if(NOT DEFINED WALL)
+  set(WALL plane)
 endif()
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
@@ -24,7 +30,7 @@ endif()
 function(lammps phase out)
   execute_process(
     COMMAND ${launcher} "${LMP}" -in "${INPUT}" -var phase ${phase} -var plugin "${PLUGIN}"
-            -var coupling ${COUPLING} -var out ${out} ${ARGN} -log "log.${out}.${phase}"
+            -var coupling ${COUPLING} -var wall ${WALL} -var out ${out} ${ARGN} -log "log.${out}.${phase}"
             -screen none
     WORKING_DIRECTORY "${DIR}" RESULT_VARIABLE ran)
   if(NOT ran EQUAL 0)
@@ -45,6 +51,18 @@ if(NOT log MATCHES "Resetting peratom fix info from restart file:\n  fix style: 
 endif()
 if(log MATCHES "Unused restart file")
   message(FATAL_ERROR "restart.cmake: restart info left unused (${DIR}/log.halves.read)")
+endif()
+if(WALL STREQUAL "drum")
+  foreach(kind IN ITEMS peratom global)
+    if(NOT log MATCHES "Resetting ${kind} fix info from restart file:\n  fix style: wall/gran/region/spinslide, fix ID: wall\n")
+      message(FATAL_ERROR "restart.cmake: the drum's ${kind} restart info was not restored (${DIR}/log.halves.read)")
+    endif()
+  endforeach()
+  if(log MATCHES "WARNING")
+    message(FATAL_ERROR "restart.cmake: the restarted drum warns (${DIR}/log.halves.read)")
+  endif()
+  message(STATUS "restart.cmake: the restarted drum equals the whole run bit for bit")
+  return()
 endif()
 lammps(write stock -var writer stock)
 lammps(read stock)

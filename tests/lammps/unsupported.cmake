@@ -10,10 +10,13 @@ file(MAKE_DIRECTORY "${DIR}")
 set(expected
   "pair_coeff granular/spinslide: hertz/material: the plugin's contact model is fixed"
   "pair_coeff granular/spinslide: cutoff must be > 0 \\(leave it out for the automatic cutoff"
-  "Fix wall/gran/spinslide: zcylinder: curved and region walls are not supported yet"
+  "Fix wall/gran/spinslide: region: a region wall is fix wall/gran/region/spinslide"
   "pair_coeff granular/spinslide: rolling: rolling resistance and cohesion"
   "Fix wall/gran/spinslide: with damping tsuji, the second number is the coefficient of restitution"
-  "pair_coeff granular/spinslide: with damping tsuji, the second number is the coefficient of restitution")
+  "pair_coeff granular/spinslide: with damping tsuji, the second number is the coefficient of restitution"
+  "Fix wall/gran/region/spinslide: region nosuch does not exist"
+  "Fix wall/gran/spinslide: a zcylinder wall needs x and y not periodic"
+  "Fix wall/gran/spinslide: wiggle: moving walls, per-contact output and heat conduction")
 set(case 0)
 foreach(message IN LISTS expected)
   math(EXPR case "${case} + 1")
