@@ -102,7 +102,6 @@ void FixWallGranRegionSpinslide::post_force(int /*vflag*/) {
   const int nlocal = atom->nlocal;
   // setup() computes forces without advancing the springs
   const bool advance = update->setupflag == 0;
-  const spinslide_lammps::ContactLaw law = contact_law();
   clear_statistics();
 
   // a moving region: its displacement and velocities of this step
@@ -114,10 +113,12 @@ void FixWallGranRegionSpinslide::post_force(int /*vflag*/) {
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    // a centre outside the region (an escaped sphere) touches nothing
-    const int nc = region->match(x[i][0], x[i][1], x[i][2]) != 0
-                       ? region->surface(x[i][0], x[i][1], x[i][2], radius[i])
-                       : 0;
+    // A centre outside the region (a sphere pushed through a face) touches
+    // nothing, and its contacts keep their history until it comes back, as
+    // in LAMMPS' fix wall/gran/region (in.pour.drum's spheres thrown up
+    // through the drum's lid do this).
+    if (region->match(x[i][0], x[i][1], x[i][2]) == 0) continue;
+    const int nc = region->surface(x[i][0], x[i][1], x[i][2], radius[i]);
     if (nc > tmax)
       error->one(FLERR, "Fix {}: region {} reports {} contacts for one sphere, more than its {}",
                  style, idregion, nc, tmax);
@@ -126,7 +127,7 @@ void FixWallGranRegionSpinslide::post_force(int /*vflag*/) {
       const Region::Contact& c = region->contact[ic];
       WallTouch touch{{c.delx, c.dely, c.delz}, c.r * c.r, c.radius, {0.0, 0.0, 0.0}};
       if (moving) region->velocity_contact(touch.vwall, x[i], ic);
-      apply_contact(i, touch, history_many[i][slot_of_contact[ic]], law, advance);
+      apply_contact(i, touch, history_many[i][slot_of_contact[ic]], advance);
     }
   }
 }

@@ -35,8 +35,10 @@
 #include "spinslide_contact.h"
 
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <string>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -52,8 +54,8 @@ constexpr double kFarAway = 1.0e20;
 std::string syntax(bool region_style) {
   return std::string(region_style ? "fix ID group wall/gran/region/spinslide"
                                   : "fix ID group wall/gran/spinslide") +
-         " E eta_n|e nu mu [xgammat x] [coupling yes|no] [moduli exact|legacy] [limit_damping] "
-         "[damping viscoelastic|tsuji] " +
+         " E eta_n|e nu mu [xgammat x] [damping viscoelastic|tsuji] [limit_damping] | granular "
+         "<LAMMPS' model keywords>, then [coupling yes|no] [moduli exact|legacy] " +
          (region_style ? "region ID" : "xplane|yplane|zplane lo hi | zcylinder radius");
 }
 
@@ -68,48 +70,46 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
     error->all(FLERR,
                "Fix {} requires atom attributes radius, rmass, omega, torque (atom_style sphere)",
                style);
-  for (int iarg = 3; iarg < narg; iarg++) {
-    const std::string key = arg[iarg];
-    if (key == "region" && !region_style)
+  for (int iarg = 3; iarg < narg; iarg++)
+    if (strcmp(arg[iarg], "region") == 0 && !region_style)
       error->all(FLERR, "Fix {}: region: a region wall is fix wall/gran/region/spinslide", style);
-    if (key == "region" || key == "zcylinder") continue;
-    const std::string why = spinslide_lammps::unsupported_granular_keyword(key);
-    if (!why.empty()) error->all(FLERR, "Fix {}: {}: {}", style, key, why);
-  }
-  if (narg < 9) error->all(FLERR, "Illegal fix {} command: {}", style, syntax(region_style));
+  if (narg < 6) error->all(FLERR, "Illegal fix {} command: {}", style, syntax(region_style));
 
-  const double e_one = utils::numeric(FLERR, arg[3], false, lmp);
-  eta_n = utils::numeric(FLERR, arg[4], false, lmp);
-  const double nu_one = utils::numeric(FLERR, arg[5], false, lmp);
-  mu = utils::numeric(FLERR, arg[6], false, lmp);
-  xgammat = 1.0;
-  coupled = 1;
-  legacy_moduli = 0;
+  // the law: LAMMPS' model keywords after `granular`, or the short form
+  const bool lammps_form = strcmp(arg[3], "granular") == 0;
+  const std::vector<std::string> words(arg + (lammps_form ? 4 : 3), arg + narg);
+  if (!lammps_form && (words.size() < 4 || !utils::is_double(arg[3])))
+    error->all(FLERR, "Illegal fix {} command: {}", style, syntax(region_style));
+  const spinslide_lammps::NumberReader number = [lmp](const std::string& w) {
+    return utils::numeric(FLERR, w.c_str(), false, lmp);
+  };
+  spinslide_lammps::ContactLaw read;
+  std::vector<std::string> rest;
+  std::string why = spinslide_lammps::parse_lammps_model(
+      lammps_form ? words : spinslide_lammps::expand_short_form(words), number, read, rest);
+  if (why.empty()) why = spinslide_lammps::check_law(read);
+  if (why.empty() && read.normal == spinslide_lammps::NormalModel::kJkr)
+    why =
+        "jkr walls are not supported (LAMMPS 29 Sep 2021's fix wall/gran takes a pull-off "
+        "distance of the wrong sign and scale, which the plugin does not reproduce); use dmt "
+        "or hertz/material for the wall";
+  if (!why.empty()) error->all(FLERR, "Fix {}: {}", style, why);
 
-  if (parse_walls_and_options(narg, arg) != 1 || (wallstyle == WallStyle::kRegion) != region_style)
+  if (parse_walls_and_options(rest) != 1 || (wallstyle == WallStyle::kRegion) != region_style)
     error->all(FLERR, "Illegal fix {} command: give one wall: {}", style, syntax(region_style));
-  check_parameters(e_one, nu_one);
-  if (tsuji) {
-    // damping tsuji: the second number is a coefficient of restitution.
-    if (!(eta_n > 0.0 && eta_n <= 1.0))
-      error->all(FLERR,
-                 "Fix {}: with damping tsuji, the second number is the coefficient of "
-                 "restitution, in (0, 1]",
-                 style);
-    eta_n = spinslide_lammps::tsuji_alpha_by_pow(eta_n);
-  }
-
-  if (legacy_moduli) {
-    // LAMMPS 29 Sep 2021 fix wall/gran's `hertz/material` and `mindlin NULL`
-    // constants, for A/B runs: (4/3)E/(2(1-nu)), with 4/3 to 16 digits, and
-    // E(2-nu)(1+nu)/4
-    kn = e_one / (2 * (1 - nu_one)) * 1.333333333333333;
-    kt = e_one / 4 * (2 - nu_one) * (1 + nu_one);
-  } else {
-    // the sphere against a wall of its own material
-    kn = 4.0 / 3.0 * spinslide_lammps::effective_youngs(e_one, nu_one, e_one, nu_one);
-    kt = 8 * spinslide_lammps::effective_shear(e_one, nu_one, e_one, nu_one);
-  }
+  check_walls();
+  if (coupled && read.twist == spinslide_lammps::TwistModel::kSds)
+    error->all(FLERR,
+               "Fix {}: coupling yes needs twisting marshall: the coupled cap takes the "
+               "twisting limit from the contact patch; give twisting marshall, or coupling no",
+               style);
+  // legacy: LAMMPS 29 Sep 2021 fix wall/gran's constants of the material
+  // models, (4/3)E/(2(1-nu)) with 4/3 to 16 digits and E(2-nu)(1+nu)/4, for
+  // A/B runs; exact: the sphere against a wall of its own material.
+  law = spinslide_lammps::resolve(
+      read,
+      legacy_moduli ? spinslide_lammps::Moduli::kLegacyWall : spinslide_lammps::Moduli::kExact,
+      true);
 
   create_attribute = 1;
   restart_peratom = 1;
@@ -131,57 +131,50 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
 // The keywords after the four numbers: the wall (xplane|yplane|zplane lo
 // hi, zcylinder radius, region ID) and the options; returns how many walls
 // were given.
-int FixWallGranSpinslide::parse_walls_and_options(int narg, char** arg) {
+int FixWallGranSpinslide::parse_walls_and_options(const std::vector<std::string>& words) {
   int nwalls = 0;
-  for (int iarg = 7; iarg < narg;) {
-    const std::string key = arg[iarg];
+  const auto value = [&](std::size_t k) -> double {
+    return words[k] == "NULL" ? 0.0 : utils::numeric(FLERR, words[k].c_str(), false, lmp);
+  };
+  for (std::size_t k = 0; k < words.size();) {
+    const std::string& key = words[k];
+    const std::string why = spinslide_lammps::unsupported_granular_keyword(key);
+    if (!why.empty()) error->all(FLERR, "Fix {}: {}: {}", style, key, why);
     if (key == "xplane" || key == "yplane" || key == "zplane") {
-      if (iarg + 2 >= narg)
+      if (k + 2 >= words.size())
         error->all(FLERR, "Illegal fix {} command: {} needs lo and hi", style, key);
       wallstyle = WallStyle::kPlane;
       axis = key[0] - 'x';
-      lo = strcmp(arg[iarg + 1], "NULL") == 0 ? -kFarAway
-                                              : utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      hi = strcmp(arg[iarg + 2], "NULL") == 0 ? kFarAway
-                                              : utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      lo = words[k + 1] == "NULL" ? -kFarAway : value(k + 1);
+      hi = words[k + 2] == "NULL" ? kFarAway : value(k + 2);
       ++nwalls;
-      iarg += 3;
+      k += 3;
       continue;
     }
-    if (key == "limit_damping") {  // (no value)
-      limit_damping = 1;
-      iarg += 1;
-      continue;
-    }
-    if (iarg + 1 >= narg) error->all(FLERR, "Illegal fix {} command: {} needs a value", style, key);
+    if (k + 1 >= words.size())
+      error->all(FLERR, "Illegal fix {} command: {} needs a value ({})", style, key,
+                 syntax(wallstyle == WallStyle::kRegion));
     if (key == "zcylinder") {
       wallstyle = WallStyle::kZCylinder;
-      cylradius = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      cylradius = value(k + 1);
       ++nwalls;
     } else if (key == "region") {
       wallstyle = WallStyle::kRegion;
-      idregion = arg[iarg + 1];
+      idregion = words[k + 1];
       ++nwalls;
     } else {
-      parse_option(key, arg[iarg + 1]);
+      parse_option(key, words[k + 1]);
     }
-    iarg += 2;
+    k += 2;
   }
   return nwalls;
 }
 
 // One option keyword and its value.
-void FixWallGranSpinslide::parse_option(const std::string& key, const char* arg) {
-  const std::string value = arg;
-  if (key == "xgammat") {
-    xgammat = utils::numeric(FLERR, arg, false, lmp);
-  } else if (key == "coupling") {
+void FixWallGranSpinslide::parse_option(const std::string& key, const std::string& value) {
+  if (key == "coupling") {
     coupled = spinslide_lammps::either(value, {"yes", "on"}, {"no", "off"});
     if (coupled < 0) error->all(FLERR, "Illegal fix {} command: coupling {}", style, value);
-  } else if (key == "damping") {
-    tsuji = spinslide_lammps::either(value, {"tsuji"}, {"viscoelastic"});
-    if (tsuji < 0)
-      error->all(FLERR, "Fix {}: damping {}: viscoelastic (default) or tsuji", style, value);
   } else if (key == "moduli") {
     legacy_moduli = spinslide_lammps::either(value, {"legacy"}, {"exact"});
     if (legacy_moduli < 0) error->all(FLERR, "Illegal fix {} command: moduli {}", style, value);
@@ -191,13 +184,8 @@ void FixWallGranSpinslide::parse_option(const std::string& key, const char* arg)
   }
 }
 
-// The material and the walls, checked.
-void FixWallGranSpinslide::check_parameters(double e_one, double nu_one) {
-  if (!(e_one > 0.0)) error->all(FLERR, "Fix {}: E must be > 0", style);
-  if (!(nu_one > -1.0 && nu_one <= 0.5))
-    error->all(FLERR, "Fix {}: nu must be in (-1, 0.5]", style);
-  if (!(eta_n >= 0.0) || !(mu >= 0.0) || !(xgammat >= 0.0))
-    error->all(FLERR, "Fix {}: eta_n, mu and xgammat must be >= 0", style);
+// The walls, checked.
+void FixWallGranSpinslide::check_walls() {
   if (wallstyle == WallStyle::kPlane) {
     if (!(lo < hi)) error->all(FLERR, "Fix {}: the walls need lo < hi", style);
     if (domain->periodicity[axis])
@@ -229,6 +217,12 @@ int FixWallGranSpinslide::setmask() { return POST_FORCE; }
 
 void FixWallGranSpinslide::init() {
   dt = update->dt;
+  // moduli legacy with damping tsuji: LAMMPS 29 Sep 2021's fix wall/gran
+  // turns its damping number into Tsuji's alpha at every init (every run),
+  // so that a second run damps with alpha(alpha(e)); reproduced for A/B
+  // runs only (moduli exact: alpha(e) throughout).
+  if (legacy_moduli && law.damping == spinslide_lammps::DampingModel::kTsuji && ninit++ > 0)
+    law.damp = spinslide_lammps::tsuji_alpha_by_pow(law.damp);
   if (!utils::strmatch(update->integrate_style, "^verlet"))
     error->all(FLERR, "Fix {} supports run_style verlet only", style);
   for (int i = 0; i < modify->nfix; i++)
@@ -246,18 +240,6 @@ void FixWallGranSpinslide::reset_dt() { dt = update->dt; }
 
 /* ---------------------------------------------------------------------- */
 
-spinslide_lammps::ContactLaw FixWallGranSpinslide::contact_law() const {
-  spinslide_lammps::ContactLaw law;
-  law.kn = kn;
-  law.kt = kt;
-  law.eta_n = eta_n;
-  law.xgammat = xgammat;
-  law.mu = mu;
-  law.limit_damping = limit_damping != 0;
-  law.tsuji = tsuji != 0;
-  return law;
-}
-
 void FixWallGranSpinslide::clear_statistics() {
   for (double& s : stats_local) s = 0.0;
   stats_reduced = 0;
@@ -270,8 +252,7 @@ void FixWallGranSpinslide::clear_statistics() {
    surface, the spin about the normal (the wall does not spin)
 ------------------------------------------------------------------------- */
 
-void FixWallGranSpinslide::apply_contact(int i, const WallTouch& touch, double* h,
-                                         const spinslide_lammps::ContactLaw& law, bool advance) {
+void FixWallGranSpinslide::apply_contact(int i, const WallTouch& touch, double* h, bool advance) {
   double** v = atom->v;
   double** f = atom->f;
   double** omega = atom->omega;
@@ -291,6 +272,7 @@ void FixWallGranSpinslide::apply_contact(int i, const WallTouch& touch, double* 
   for (int k = 0; k < 3; ++k) {
     state.vr[k] = v[i][k] - touch.vwall[k];
     state.wr[k] = radi * omega[i][k];
+    state.relrot[k] = omega[i][k];
   }
   const double nx = state.n[0], ny = state.n[1], nz = state.n[2];
   state.twist_rate = omega[i][0] * nx + omega[i][1] * ny + omega[i][2] * nz;
@@ -314,9 +296,18 @@ void FixWallGranSpinslide::apply_contact(int i, const WallTouch& touch, double* 
   torque[i][0] -= radi * tor1;
   torque[i][1] -= radi * tor2;
   torque[i][2] -= radi * tor3;
-  torque[i][0] += cf.mt * nx;
-  torque[i][1] += cf.mt * ny;
-  torque[i][2] += cf.mt * nz;
+  if (law.twist != spinslide_lammps::TwistModel::kNone) {
+    torque[i][0] += cf.mt * nx;
+    torque[i][1] += cf.mt * ny;
+    torque[i][2] += cf.mt * nz;
+  }
+  // rolling resistance: R* n x F_r
+  if (law.rolling) {
+    const double* fr = cf.fr;
+    torque[i][0] += state.reff * (ny * fr[2] - nz * fr[1]);
+    torque[i][1] += state.reff * (nz * fr[0] - nx * fr[2]);
+    torque[i][2] += state.reff * (nx * fr[1] - ny * fr[0]);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -333,7 +324,6 @@ void FixWallGranSpinslide::post_force(int /*vflag*/) {
   const int nlocal = atom->nlocal;
   // setup() computes forces without advancing the springs
   const bool advance = update->setupflag == 0;
-  const spinslide_lammps::ContactLaw law = contact_law();
   clear_statistics();
 
   for (int i = 0; i < nlocal; i++) {
@@ -362,7 +352,7 @@ void FixWallGranSpinslide::post_force(int /*vflag*/) {
       for (int k = 0; k < kHistSize; k++) h[k] = 0.0;
       continue;
     }
-    apply_contact(i, touch, h, law, advance);
+    apply_contact(i, touch, h, advance);
   }
 }
 

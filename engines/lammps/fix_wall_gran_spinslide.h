@@ -14,6 +14,8 @@
 ///   fix ID group wall/gran/spinslide E eta_n nu mu [xgammat x] [limit_damping]
 ///       [damping viscoelastic|tsuji] [coupling yes|no] [moduli exact|legacy]
 ///       xplane|yplane|zplane lo hi  |  zcylinder radius
+///   fix ID group wall/gran/spinslide granular <LAMMPS' model keywords> [coupling yes|no]
+///       [moduli exact|legacy] xplane|yplane|zplane lo hi  |  zcylinder radius
 ///
 /// lo, hi: the walls' positions (NULL: no wall on that side); radius: a
 /// cylinder about the z axis through x = y = 0.  FixWallGranRegionSpinslide
@@ -27,6 +29,7 @@
 #include "spinslide_contact.h"
 
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -74,17 +77,16 @@ class FixWallGranSpinslide : public Fix {
     double vwall[3];
   };
 
-  int parse_walls_and_options(int narg, char** arg);
-  void parse_option(const std::string& key, const char* arg);
-  void check_parameters(double e_one, double nu_one);
-  /// The law of the wall's contacts (the fix's constants).
-  spinslide_lammps::ContactLaw contact_law() const;
+  /// The words after the law: the wall (xplane|yplane|zplane lo hi,
+  /// zcylinder radius, region ID) and the options; returns how many walls.
+  int parse_walls_and_options(const std::vector<std::string>& words);
+  void parse_option(const std::string& key, const std::string& value);
+  void check_walls();
   /// Zeroes the statistics of the step (post_force's start).
   void clear_statistics();
   /// Sphere i's contact `touch` with history h (kHistSize values): the forces
   /// and torques added to i, the statistics counted.
-  void apply_contact(int i, const WallTouch& touch, double* h,
-                     const spinslide_lammps::ContactLaw& law, bool advance);
+  void apply_contact(int i, const WallTouch& touch, double* h, bool advance);
 
   WallStyle wallstyle = WallStyle::kPlane;
   int axis = 2;            // the planes' normal: 0 x, 1 y, 2 z
@@ -94,11 +96,9 @@ class FixWallGranSpinslide : public Fix {
   std::string idregion;    // the region (wall/gran/region/spinslide)
   int coupled = 1;         // 1: the coupled cap (default); 0: independent caps
   int legacy_moduli = 0;   // 1: LAMMPS 2021 fix wall/gran's (4/3)E* and 8G*
-  int limit_damping = 0;   // 1: the normal force not below 0
-  int tsuji = 0;           // 1: damping tsuji (eta_n holds alpha(e))
+  int ninit = 0;           // how many times init() ran (moduli legacy, damping tsuji)
 
-  // the contact law: (4/3)E*, 8G*, eta_n, xgammat, mu
-  double kn = 0.0, kt = 0.0, eta_n = 0.0, xgammat = 1.0, mu = 0.0;
+  spinslide_lammps::ContactLaw law;  // the wall's contact law, resolved
 
   double dt = 0.0;
   double** history = nullptr;  // per atom: spinslide_lammps::kHistSize values

@@ -5,7 +5,7 @@
 /// \file keywords.h
 /// The two-way keyword values of the plugin's commands (coupling yes|no,
 /// twist_transfer symmetric|negate, moduli exact|legacy), read in one place,
-/// and the message for LAMMPS' granular keywords that it does not take.
+/// and the message for LAMMPS' granular wall keywords that it does not take.
 
 #ifndef SPINSLIDE_LAMMPS_KEYWORDS_H
 #define SPINSLIDE_LAMMPS_KEYWORDS_H
@@ -30,16 +30,12 @@ inline int either(const std::string& value, std::initializer_list<const char*> o
 /// empty string if `key` is not one of them: a user converting an input
 /// reads what to do instead of "unknown keyword".
 inline std::string unsupported_granular_keyword(const std::string& key) {
-  if (key == "hertz" || key == "hertz/material" || key == "dmt" || key == "jkr" || key == "hooke" ||
-      key == "tangential" || key == "twisting")
-    return "the plugin's contact model is fixed (Hertz with E, nu and eta_n; Mindlin and "
-           "Marshall springs; the coupled cap): give the numbers E eta_n nu mu, not LAMMPS' "
-           "model keywords (damping viscoelastic|tsuji is an option; docs/lammps.md)";
-  if (key == "rolling" || key == "cohesion")
-    return "rolling resistance and cohesion (jkr, dmt) are not supported yet (docs/lammps.md)";
-  if (key == "wiggle" || key == "shear" || key == "contacts" || key == "temperature")
-    return "moving walls, per-contact output and heat conduction of fix wall/gran are not "
-           "supported: the wall is fixed in space";
+  if (key == "wiggle" || key == "shear")
+    return "the plane and cylinder walls are fixed in space: move a region wall instead "
+           "(fix wall/gran/region/spinslide with region ... move or rotate)";
+  if (key == "contacts" || key == "temperature")
+    return "per-contact output and heat conduction of fix wall/gran are not supported (f_ID "
+           "gives the contact statistics)";
   return "";
 }
 

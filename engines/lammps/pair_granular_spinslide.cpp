@@ -45,12 +45,12 @@
 #include <cstddef>
 #include <cstring>
 #include <string>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
-using spinslide_lammps::effective_shear;
-using spinslide_lammps::effective_youngs;
 using spinslide_lammps::kHistRatio;
+using spinslide_lammps::kHistRoll;
 using spinslide_lammps::kHistShear;
 using spinslide_lammps::kHistSize;
 using spinslide_lammps::kHistSliding;
@@ -110,16 +110,7 @@ PairGranularSpinslide::~PairGranularSpinslide() {
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
-    memory->destroy(youngs);
-    memory->destroy(poisson);
-    memory->destroy(eta_n);
-    memory->destroy(mu);
-    memory->destroy(xgammat);
     memory->destroy(cutoff_type);
-    memory->destroy(limit_damping);
-    memory->destroy(tsuji);
-    memory->destroy(kn_hertz);
-    memory->destroy(kt_mindlin);
     delete[] onerad_dynamic;
     delete[] onerad_frozen;
     delete[] maxrad_dynamic;
@@ -130,6 +121,10 @@ PairGranularSpinslide::~PairGranularSpinslide() {
 /* ---------------------------------------------------------------------- */
 
 namespace {
+
+const char* const kCoeffSyntax =
+    "pair_coeff I J E eta_n|e nu mu [xgammat x] [damping viscoelastic|tsuji] [limit_damping] "
+    "[cutoff rc], or pair_coeff I J with LAMMPS' pair granular model keywords [cutoff rc]";
 
 // The pair's effective mass m_i m_j/(m_i + m_j), or the other sphere's mass
 // where one is frozen (fix freeze: it does not move).
@@ -166,8 +161,6 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
   for (int k = 0; k < nextra; ++k) pvector[k] = 0.0;
 
   double** x = atom->x;
-  double** f = atom->f;
-  double** torque = atom->torque;
   const double* radius = atom->radius;
   const int* type = atom->type;
   const int nlocal = atom->nlocal;
@@ -207,8 +200,10 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
       const double radj = radius[j];
       const double radsum = radi + radj;
       double* history = &allhistory[static_cast<std::ptrdiff_t>(kHistSize) * jj];
+      const spinslide_lammps::ContactLaw& law = contact_law(itype, jtype);
 
-      if (rsq >= radsum * radsum) {
+      if (!spinslide_lammps::pair_touching(law, rsq, radsum, radi * radj / radsum,
+                                           touch[jj] != 0)) {
         // apart: forget the contact
         touch[jj] = 0;
         for (int k = 0; k < kHistSize; ++k) history[k] = 0.0;
@@ -218,59 +213,62 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
 
       const double r = std::sqrt(rsq);
       const spinslide_lammps::ContactState state = contact_state(i, j, r);
-      const double nx = state.n[0], ny = state.n[1], nz = state.n[2];
-      const spinslide_lammps::ContactLaw law = contact_law(itype, jtype);
-
       spinslide_lammps::ContactForce cf;
       spinslide_lammps::contact_force(law, state, history, dt, advance, coupled != 0, error,
                                       "pair granular/spinslide", cf);
-      const double delta = state.delta;
-      const double fn = cf.fn;
-      const double* fs = cf.fs;
-      const double mt = cf.mt;
-
       if (tally) stats.add(cf, newton_pair, j, nlocal);
-
-      // forces and torques: the friction acts at the contact point, at
-      // r - d/2 from each centre; the twisting torque about n
-      const double fx = nx * fn + fs[0];
-      const double fy = ny * fn + fs[1];
-      const double fz = nz * fn + fs[2];
-      f[i][0] += fx;
-      f[i][1] += fy;
-      f[i][2] += fz;
-
-      const double tor1 = ny * fs[2] - nz * fs[1];
-      const double tor2 = nz * fs[0] - nx * fs[2];
-      const double tor3 = nx * fs[1] - ny * fs[0];
-      const double arm_i = radi - 0.5 * delta;
-      torque[i][0] -= arm_i * tor1;
-      torque[i][1] -= arm_i * tor2;
-      torque[i][2] -= arm_i * tor3;
-      const double tw1 = mt * nx, tw2 = mt * ny, tw3 = mt * nz;
-      torque[i][0] += tw1;
-      torque[i][1] += tw2;
-      torque[i][2] += tw3;
-
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= fx;
-        f[j][1] -= fy;
-        f[j][2] -= fz;
-        const double arm_j = radj - 0.5 * delta;
-        torque[j][0] -= arm_j * tor1;
-        torque[j][1] -= arm_j * tor2;
-        torque[j][2] -= arm_j * tor3;
-        torque[j][0] -= tw1;
-        torque[j][1] -= tw2;
-        torque[j][2] -= tw3;
-      }
-      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+      double fij[3];
+      apply_forces(i, j, law, state, cf, newton_pair != 0 || j < nlocal, fij);
+      if (evflag)
+        ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fij[0], fij[1], fij[2], delx, dely, delz);
     }
   }
   pvector[kExtraContacts] = stats.contacts;
   pvector[kExtraSliding] = stats.sliding;
   pvector[kExtraForce] = stats.force;
   pvector[kExtraTorque] = stats.torque;
+}
+
+/* ----------------------------------------------------------------------
+   the contact's forces and torques on i (and, if `on_j`, the opposite ones
+   on j), in LAMMPS' pair granular's order: the friction acts at the contact
+   point, r - d/2 from each centre; then the twisting torque about n; then
+   the rolling resistance's torque R* n x F_r.  fij: the force on i.
+------------------------------------------------------------------------- */
+
+void PairGranularSpinslide::apply_forces(int i, int j, const spinslide_lammps::ContactLaw& law,
+                                         const spinslide_lammps::ContactState& state,
+                                         const spinslide_lammps::ContactForce& cf, bool on_j,
+                                         double fij[3]) {
+  double** f = atom->f;
+  double** torque = atom->torque;
+  const double nx = state.n[0], ny = state.n[1], nz = state.n[2];
+  const double* fs = cf.fs;
+  fij[0] = nx * cf.fn + fs[0];
+  fij[1] = ny * cf.fn + fs[1];
+  fij[2] = nz * cf.fn + fs[2];
+  const double tor[3] = {ny * fs[2] - nz * fs[1], nz * fs[0] - nx * fs[2], nx * fs[1] - ny * fs[0]};
+  const double tw[3] = {cf.mt * nx, cf.mt * ny, cf.mt * nz};
+  const double* fr = cf.fr;
+  const double reff = state.reff;
+  const double tr[3] = {reff * (ny * fr[2] - nz * fr[1]), reff * (nz * fr[0] - nx * fr[2]),
+                        reff * (nx * fr[1] - ny * fr[0])};
+  const bool twisting = law.twist != spinslide_lammps::TwistModel::kNone;
+  const double arm_i = atom->radius[i] - 0.5 * state.delta;
+  for (int k = 0; k < 3; ++k) f[i][k] += fij[k];
+  for (int k = 0; k < 3; ++k) torque[i][k] -= arm_i * tor[k];
+  if (twisting)
+    for (int k = 0; k < 3; ++k) torque[i][k] += tw[k];
+  if (law.rolling)
+    for (int k = 0; k < 3; ++k) torque[i][k] += tr[k];
+  if (!on_j) return;
+  const double arm_j = atom->radius[j] - 0.5 * state.delta;
+  for (int k = 0; k < 3; ++k) f[j][k] -= fij[k];
+  for (int k = 0; k < 3; ++k) torque[j][k] -= arm_j * tor[k];
+  if (twisting)
+    for (int k = 0; k < 3; ++k) torque[j][k] -= tw[k];
+  if (law.rolling)
+    for (int k = 0; k < 3; ++k) torque[j][k] -= tr[k];
 }
 
 /* ---------------------------------------------------------------------- */
@@ -288,27 +286,25 @@ spinslide_lammps::ContactState PairGranularSpinslide::contact_state(int i, int j
     state.n[k] = (x[i][k] - x[j][k]) * rinv;
     state.vr[k] = v[i][k] - v[j][k];
     state.wr[k] = radi * omega[i][k] + radj * omega[j][k];
+    state.relrot[k] = omega[i][k] - omega[j][k];
   }
   state.delta = radsum - r;
   state.reff = radi * radj / radsum;
   state.meff = effective_mass(atom->rmass, atom->mask, freeze_group_bit, i, j);
-  state.twist_rate = (omega[i][0] - omega[j][0]) * state.n[0] +
-                     (omega[i][1] - omega[j][1]) * state.n[1] +
-                     (omega[i][2] - omega[j][2]) * state.n[2];
+  state.twist_rate =
+      state.relrot[0] * state.n[0] + state.relrot[1] * state.n[1] + state.relrot[2] * state.n[2];
   return state;
 }
 
-// The constants of the type pair.
-spinslide_lammps::ContactLaw PairGranularSpinslide::contact_law(int itype, int jtype) const {
-  spinslide_lammps::ContactLaw law;
-  law.kn = kn_hertz[itype][jtype];
-  law.kt = kt_mindlin[itype][jtype];
-  law.eta_n = eta_n[itype][jtype];
-  law.xgammat = xgammat[itype][jtype];
-  law.mu = mu[itype][jtype];
-  law.limit_damping = limit_damping[itype][jtype] != 0;
-  law.tsuji = tsuji[itype][jtype] != 0;
-  return law;
+// The law of the type pair.
+const spinslide_lammps::ContactLaw& PairGranularSpinslide::contact_law(int itype, int jtype) const {
+  return laws[static_cast<std::size_t>(itype) * static_cast<std::size_t>(atom->ntypes + 1) +
+              static_cast<std::size_t>(jtype)];
+}
+
+spinslide_lammps::ContactLaw& PairGranularSpinslide::law_of(int itype, int jtype) {
+  return laws[static_cast<std::size_t>(itype) * static_cast<std::size_t>(atom->ntypes + 1) +
+              static_cast<std::size_t>(jtype)];
 }
 
 /* ----------------------------------------------------------------------
@@ -368,18 +364,9 @@ void PairGranularSpinslide::allocate() {
   for (int i = 1; i <= n; i++)
     for (int j = i; j <= n; j++) setflag[i][j] = 0;
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
-  memory->create(youngs, n + 1, n + 1, "pair:youngs");
-  memory->create(poisson, n + 1, n + 1, "pair:poisson");
-  memory->create(eta_n, n + 1, n + 1, "pair:eta_n");
-  memory->create(mu, n + 1, n + 1, "pair:mu");
-  memory->create(xgammat, n + 1, n + 1, "pair:xgammat");
   memory->create(cutoff_type, n + 1, n + 1, "pair:cutoff_type");
-  memory->create(limit_damping, n + 1, n + 1, "pair:limit_damping");
-  memory->create(tsuji, n + 1, n + 1, "pair:tsuji");
-  for (int i = 0; i <= n; i++)
-    for (int j = 0; j <= n; j++) limit_damping[i][j] = tsuji[i][j] = 0;
-  memory->create(kn_hertz, n + 1, n + 1, "pair:kn_hertz");
-  memory->create(kt_mindlin, n + 1, n + 1, "pair:kt_mindlin");
+  laws.assign(static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1),
+              spinslide_lammps::ContactLaw{});
   onerad_dynamic = new double[n + 1];
   onerad_frozen = new double[n + 1];
   maxrad_dynamic = new double[n + 1];
@@ -414,95 +401,65 @@ void PairGranularSpinslide::settings(int narg, char** arg) {
 }
 
 /* ----------------------------------------------------------------------
-   the optional keywords of pair_coeff after E eta_n nu mu
+   pair_coeff's words after I J: the short form E eta_n|e nu mu [xgammat x]
+   [damping viscoelastic|tsuji] [limit_damping] [cutoff rc], or LAMMPS'
+   pair granular model keywords [cutoff rc]
 ------------------------------------------------------------------------- */
 
-PairGranularSpinslide::CoeffOptions PairGranularSpinslide::coeff_options(int narg, char** arg) {
-  CoeffOptions opt;
-  for (int iarg = 6; iarg < narg; iarg += 2) {
-    if (strcmp(arg[iarg], "limit_damping") == 0) {  // (no value)
-      opt.limit_damping = true;
-      iarg -= 1;
-      continue;
-    }
-    if (iarg + 1 >= narg)
-      error->all(FLERR, "Incorrect args for pair coefficients: {} needs a value", arg[iarg]);
-    if (strcmp(arg[iarg], "damping") == 0) {
-      const int model = spinslide_lammps::either(arg[iarg + 1], {"tsuji"}, {"viscoelastic"});
-      if (model < 0)
-        error->all(FLERR,
-                   "pair_coeff granular/spinslide: damping {}: viscoelastic (default) or tsuji",
-                   arg[iarg + 1]);
-      opt.tsuji = model == 1;
-    } else if (strcmp(arg[iarg], "xgammat") == 0) {
-      opt.xgammat = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    } else if (strcmp(arg[iarg], "cutoff") == 0) {
-      opt.cutoff = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+spinslide_lammps::ContactLaw PairGranularSpinslide::read_law(int narg, char** arg, double& cutoff) {
+  const std::vector<std::string> words(arg + 2, arg + narg);
+  const bool short_form = utils::is_double(arg[2]);
+  if (short_form && words.size() < 4)
+    error->all(FLERR, "Incorrect args for pair coefficients: {}", kCoeffSyntax);
+  const spinslide_lammps::NumberReader number = [this](const std::string& w) {
+    return utils::numeric(FLERR, w.c_str(), false, lmp);
+  };
+  spinslide_lammps::ContactLaw law;
+  std::vector<std::string> rest;
+  const std::string why = spinslide_lammps::parse_lammps_model(
+      short_form ? spinslide_lammps::expand_short_form(words) : words, number, law, rest);
+  if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}", why);
+  for (std::size_t k = 0; k < rest.size(); ++k) {
+    if (rest[k] == "cutoff" && k + 1 < rest.size()) {
+      cutoff = number(rest[++k]);
       // (LAMMPS' granular takes cutoff -1 for automatic; here the automatic
       // cutoff is the default, and a given one must be a distance.)
-      if (!(opt.cutoff > 0.0))
+      if (!(cutoff > 0.0))
         error->all(FLERR,
                    "pair_coeff granular/spinslide: cutoff must be > 0 (leave it out for the "
                    "automatic cutoff, the contact distance of the largest spheres)");
-    } else {
-      error->all(FLERR, "Incorrect args for pair coefficients: unknown keyword {}", arg[iarg]);
+      continue;
     }
+    const std::string why = spinslide_lammps::unsupported_granular_keyword(rest[k]);
+    if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}: {}", rest[k], why);
+    error->all(FLERR, "Incorrect args for pair coefficients: unknown keyword {} ({})", rest[k],
+               kCoeffSyntax);
   }
-  return opt;
+  return law;
 }
 
-/* ----------------------------------------------------------------------
-   pair_coeff I J E eta_n|e nu mu [xgammat x] [cutoff rc] [limit_damping]
-              [damping viscoelastic|tsuji]
-------------------------------------------------------------------------- */
-
 void PairGranularSpinslide::coeff(int narg, char** arg) {
-  for (int iarg = 2; iarg < narg; iarg++) {
-    const std::string why = spinslide_lammps::unsupported_granular_keyword(arg[iarg]);
-    if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}: {}", arg[iarg], why);
-  }
-  if (narg < 6)
-    error->all(FLERR,
-               "Incorrect args for pair coefficients: "
-               "pair_coeff I J E eta_n|e nu mu [xgammat x] [cutoff rc] [limit_damping] "
-               "[damping viscoelastic|tsuji]");
+  if (narg < 3) error->all(FLERR, "Incorrect args for pair coefficients: {}", kCoeffSyntax);
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
-  const double e_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double eta_one = utils::numeric(FLERR, arg[3], false, lmp);
-  const double nu_one = utils::numeric(FLERR, arg[4], false, lmp);
-  const double mu_one = utils::numeric(FLERR, arg[5], false, lmp);
-  const CoeffOptions opt = coeff_options(narg, arg);
-  const double xgt_one = opt.xgammat, cut_one = opt.cutoff;
-  // damping tsuji: the second number is a coefficient of restitution.
-  if (opt.tsuji && !(eta_one > 0.0 && eta_one <= 1.0))
-    error->all(FLERR,
-               "pair_coeff granular/spinslide: with damping tsuji, the second number is the "
-               "coefficient of restitution, in (0, 1]");
-  const double damping_one = opt.tsuji ? spinslide_lammps::tsuji_alpha(eta_one) : eta_one;
-  if (!(e_one > 0.0)) error->all(FLERR, "pair_coeff granular/spinslide: E must be > 0");
-  if (!(nu_one > -1.0 && nu_one <= 0.5))
-    error->all(FLERR, "pair_coeff granular/spinslide: nu must be in (-1, 0.5]");
-  if (!(eta_one >= 0.0) || !(mu_one >= 0.0) || !(xgt_one >= 0.0))
-    error->all(FLERR, "pair_coeff granular/spinslide: eta_n, mu and xgammat must be >= 0");
+  double cut_one = -1.0;
+  const spinslide_lammps::ContactLaw read = read_law(narg, arg, cut_one);
+  const std::string why = spinslide_lammps::check_law(read);
+  if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}", why);
+  const spinslide_lammps::ContactLaw law =
+      spinslide_lammps::resolve(read, spinslide_lammps::Moduli::kExact, false);
+  // JKR: contacts last beyond touching, until the pull-off distance
+  if (law.normal == spinslide_lammps::NormalModel::kJkr) beyond_contact = 1;
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {
     for (int j = std::max(jlo, i); j <= jhi; j++) {
-      youngs[i][j] = youngs[j][i] = e_one;
-      poisson[i][j] = poisson[j][i] = nu_one;
-      eta_n[i][j] = eta_n[j][i] = damping_one;
-      tsuji[i][j] = tsuji[j][i] = opt.tsuji ? 1 : 0;
-      mu[i][j] = mu[j][i] = mu_one;
-      xgammat[i][j] = xgammat[j][i] = xgt_one;
+      law_of(i, j) = law_of(j, i) = law;
       cutoff_type[i][j] = cutoff_type[j][i] = cut_one;
-      limit_damping[i][j] = limit_damping[j][i] = opt.limit_damping ? 1 : 0;
-      kn_hertz[i][j] = kn_hertz[j][i] = 4.0 / 3.0 * effective_youngs(e_one, nu_one, e_one, nu_one);
-      kt_mindlin[i][j] = kt_mindlin[j][i] = 8 * effective_shear(e_one, nu_one, e_one, nu_one);
       setflag[i][j] = 1;
       count++;
     }
@@ -584,25 +541,21 @@ void PairGranularSpinslide::init_style() {
 double PairGranularSpinslide::init_one(int i, int j) {
   if (setflag[i][j] == 0) {
     // mixed materials: the effective moduli of the two, and the geometric
-    // means of the damping, friction and tangential damping ratios
-    const double ei = youngs[i][i], ej = youngs[j][j];
-    const double nui = poisson[i][i], nuj = poisson[j][j];
-    kn_hertz[i][j] = kn_hertz[j][i] = 4.0 / 3.0 * effective_youngs(ei, nui, ej, nuj);
-    kt_mindlin[i][j] = kt_mindlin[j][i] = 8 * effective_shear(ei, nui, ej, nuj);
-    eta_n[i][j] = eta_n[j][i] = std::sqrt(eta_n[i][i] * eta_n[j][j]);
-    mu[i][j] = mu[j][i] = std::sqrt(mu[i][i] * mu[j][j]);
-    xgammat[i][j] = xgammat[j][i] = std::sqrt(xgammat[i][i] * xgammat[j][j]);
-    cutoff_type[i][j] = cutoff_type[j][i] = -1.0;
-    // (mixed types: limit_damping if either type has it; LAMMPS' own
-    // granular leaves it unset there)
-    limit_damping[i][j] = limit_damping[j][i] = limit_damping[i][i] || limit_damping[j][j];
-    if (tsuji[i][i] != tsuji[j][j])
+    // means of the other numbers (granular_model.h, mix)
+    if (!spinslide_lammps::same_forms(law_of(i, i), law_of(j, j)))
       error->all(FLERR,
-                 "Pair granular/spinslide: types {} and {} have different damping models; give "
-                 "their pair_coeff",
+                 "Pair granular/spinslide: types {} and {} have different models; give their "
+                 "pair_coeff",
                  i, j);
-    tsuji[i][j] = tsuji[j][i] = tsuji[i][i];
+    law_of(i, j) = law_of(j, i) = spinslide_lammps::mix(law_of(i, i), law_of(j, j));
+    cutoff_type[i][j] = cutoff_type[j][i] = -1.0;
   }
+  if (coupled && law_of(i, j).twist == spinslide_lammps::TwistModel::kSds)
+    error->all(FLERR,
+               "Pair granular/spinslide: coupling yes needs twisting marshall (types {} {}): the "
+               "coupled cap takes the twisting limit from the contact patch, not from sds' "
+               "coefficient; give twisting marshall, or coupling no",
+               i, j);
 
   if (cutoff_type[i][j] > 0.0) return cutoff_type[i][j];
 
@@ -613,9 +566,23 @@ double PairGranularSpinslide::init_one(int i, int j) {
                      (maxrad_dynamic[i] > 0.0 && maxrad_frozen[j] > 0.0) ||
                      (maxrad_frozen[i] > 0.0 && maxrad_dynamic[j] > 0.0);
   if (known) {
-    double cut = maxrad_dynamic[i] + maxrad_dynamic[j];
-    cut = std::max(cut, maxrad_frozen[i] + maxrad_dynamic[j]);
-    cut = std::max(cut, maxrad_dynamic[i] + maxrad_frozen[j]);
+    // JKR: LAMMPS' cutoff, which adds the overlap at pull-off (negative):
+    // kept for the same neighbor bins, hence the same order of summation,
+    // as LAMMPS; the skin must then reach the pull-off distance.
+    const spinslide_lammps::ContactLaw& law = law_of(i, j);
+    const auto reach = [&law](double ri, double rj) {
+      return ri + rj + spinslide_lammps::pulloff_distance(law, ri, rj);
+    };
+    double cut = reach(maxrad_dynamic[i], maxrad_dynamic[j]);
+    cut = std::max(cut, reach(maxrad_frozen[i], maxrad_dynamic[j]));
+    cut = std::max(cut, reach(maxrad_dynamic[i], maxrad_frozen[j]));
+    const double pulloff =
+        spinslide_lammps::pulloff_distance(law, maxrad_dynamic[i], maxrad_dynamic[j]);
+    if (cut + neighbor->skin < maxrad_dynamic[i] + maxrad_dynamic[j] - pulloff && comm->me == 0)
+      error->warning(FLERR,
+                     "Pair granular/spinslide: types {} {}: the neighbor skin {} does not reach "
+                     "the JKR pull-off distance {}: contacts may break early; give a larger skin",
+                     i, j, neighbor->skin, maxrad_dynamic[i] + maxrad_dynamic[j] - pulloff);
     return cut;
   }
   double cut = 0.0;
@@ -653,5 +620,7 @@ void PairGranularSpinslide::transfer_history(double* source, double* target) {
   target[kHistShear + 1] = -source[kHistShear + 1];
   target[kHistShear + 2] = -source[kHistShear + 2];
   target[kHistTwist] = twist_negate ? -source[kHistTwist] : source[kHistTwist];
-  for (int k = kHistRatio; k < kHistSize; ++k) target[k] = source[k];
+  for (int k = kHistRatio; k < kHistRoll; ++k) target[k] = source[k];
+  // the rolling spring, like the tangential one, changes sign
+  for (int k = kHistRoll; k < kHistRoll + 3; ++k) target[k] = -source[k];
 }

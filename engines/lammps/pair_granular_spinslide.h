@@ -13,7 +13,9 @@
 /// friction), or independently (`coupling no`) as pair_style granular does.
 ///
 ///   pair_style granular/spinslide [coupling yes|no] [twist_transfer symmetric|negate]
-///   pair_coeff I J E eta_n nu mu [xgammat x] [cutoff rc]
+///   pair_coeff I J E eta_n nu mu [xgammat x] [damping viscoelastic|tsuji] [limit_damping]
+///              [cutoff rc]
+///   pair_coeff I J <LAMMPS pair granular model keywords> [cutoff rc]
 ///
 /// engines/lammps/README.md documents the models and the syntax.
 
@@ -24,6 +26,7 @@
 #include "spinslide_contact.h"
 
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -55,15 +58,13 @@ class PairGranularSpinslide : public Pair {
 
  protected:
   void allocate();
-  // pair_coeff's optional keywords.
-  struct CoeffOptions {
-    double xgammat = 1.0, cutoff = -1.0;
-    bool limit_damping = false;
-    bool tsuji = false;  // damping tsuji: eta_n is a coefficient of restitution
-  };
-  CoeffOptions coeff_options(int narg, char** arg);
+  spinslide_lammps::ContactLaw read_law(int narg, char** arg, double& cutoff);
   spinslide_lammps::ContactState contact_state(int i, int j, double r) const;
-  spinslide_lammps::ContactLaw contact_law(int itype, int jtype) const;
+  void apply_forces(int i, int j, const spinslide_lammps::ContactLaw& law,
+                    const spinslide_lammps::ContactState& state,
+                    const spinslide_lammps::ContactForce& cf, bool on_j, double fij[3]);
+  const spinslide_lammps::ContactLaw& contact_law(int itype, int jtype) const;
+  spinslide_lammps::ContactLaw& law_of(int itype, int jtype);
   double dt = 0.0;
   int coupled = 1;       // 1: the coupled cap (default); 0: independent caps
   int twist_negate = 0;  // 1: the twist spring flips sign when a contact changes owner
@@ -72,13 +73,9 @@ class PairGranularSpinslide : public Pair {
   class FixNeighHistory* fix_history = nullptr;
   std::string id_dummy, id_history;
 
-  // per type pair: the pair_coeff inputs ...
-  double **youngs = nullptr, **poisson = nullptr, **eta_n = nullptr, **mu = nullptr;
-  double **xgammat = nullptr, **cutoff_type = nullptr;
-  int** limit_damping = nullptr;  // 1: the normal force is not below 0
-  int** tsuji = nullptr;          // 1: damping tsuji (eta_n holds alpha(e))
-  // ... and the derived constants: (4/3)E* and 8G*
-  double **kn_hertz = nullptr, **kt_mindlin = nullptr;
+  // per type pair (i (ntypes + 1) + j): the contact law, resolved
+  std::vector<spinslide_lammps::ContactLaw> laws;
+  double** cutoff_type = nullptr;  // the given cutoff (-1: automatic)
 
   double *onerad_dynamic = nullptr, *onerad_frozen = nullptr;
   double *maxrad_dynamic = nullptr, *maxrad_frozen = nullptr;

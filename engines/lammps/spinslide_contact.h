@@ -7,41 +7,47 @@
 //
 /// \file spinslide_contact.h
 /// The per-contact law shared by the pair style granular/spinslide (sphere
-/// against sphere) and the fix wall/gran/spinslide (sphere against a wall,
-/// a body of infinite radius and mass): Hertz with viscoelastic damping, a
-/// Mindlin tangential spring and a Marshall twisting spring with their
-/// damping, capped together on spinslide's Hertz limit set or independently,
-/// and the update of the contact's history.
+/// against sphere) and the wall fixes (sphere against a wall, a body of
+/// infinite mass): the normal force of LAMMPS' pair granular models with
+/// their damping, a tangential spring (linear or Mindlin) or viscous
+/// friction, a twisting spring (Marshall's or sds) and a rolling spring
+/// (sds), capped at the friction limit, and the update of the contact's
+/// history.  granular_model.h reads the law.
 ///
 /// Per contact and step, with n the unit normal from the partner to the
 /// sphere, d the overlap, R* the effective radius, m* the effective mass and
-/// a = sqrt(R* d) the patch radius:
+/// a the patch radius (sqrt(R* d); JKR: its adhesive patch):
 ///
-///   normal     F_n = kn d a - eta_n a m* v_n              (Hertz, kn = (4/3) E*)
-///   tangential F_t = -k_t xi - x_gt eta_n a m* v_t,       k_t = kt a  (kt = 8 G*)
-///   twisting   M   = -k_w phi - (x_gt eta_n a m* a^2/2) w_n,  k_w = k_t a^2/2
+///   normal     F_n = k_n d [a] - gamma_n v_n      (hooke: without a; DMT, JKR: adhesive)
+///   tangential F_t = -k_t xi - x_gt gamma_n v_t,  k_t = kt a (Mindlin) or kt (linear)
+///   twisting   M   = -k_w phi - g_w w_n,          Marshall: k_w = k_t a^2/2, g_w = x_gt gamma_n
+///   a^2/2 rolling    F_r = -k_r rho - g_r v_r,          torque R* n x F_r
 ///
 /// xi is the tangential spring (kept in the contact's tangent plane, its
-/// length preserved as the plane turns), phi the twisting spring, v_t the
-/// slip velocity at the contact and w_n the relative spin about n; the
-/// springs are stretched by v_t dt and w_n dt each step.  The trial friction
-/// (F_t, M) is capped at the load mu |F_n|:
+/// length preserved as the plane turns), phi the twisting spring, rho the
+/// rolling spring, v_t the slip velocity at the contact, w_n the relative
+/// spin about n and v_r = R* (w_i - w_j) x n; the springs are stretched by
+/// v_t dt, w_n dt and v_r dt each step.  The friction (F_t, M) is capped at
+/// the load mu F_c (F_c = |F_n|; DMT, JKR: |F_n + 2 F_pulloff|):
 ///
-///   independent: |F_t| <= mu |F_n| and |M| <= (2/3) a mu |F_n| separately
-///                (LAMMPS' `tangential mindlin NULL x_gt mu twisting
-///                marshall`, the same arithmetic in the same order);
-///   coupled:     (F_t, M) in mu |F_n| L, L spinslide's exact limit set of a
+///   independent: |F_t| <= mu F_c and |M| <= mu_w F_c separately, mu_w =
+///                (2/3) a mu (Marshall) or as given (sds) (LAMMPS' pair
+///                granular, the same arithmetic in the same order);
+///   coupled:     (F_t, M) in mu F_c L, L spinslide's exact limit set of a
 ///                Hertzian patch: outside it, the trial is replaced by its
-///                nearest point of mu |F_n| L in the springs' energy metric
-///                |dF|^2/k_t + |dM|^2/k_w.
+///                nearest point of mu F_c L in the springs' energy metric
+///                |dF|^2/k_t + |dM|^2/k_w (a tangential spring and
+///                Marshall's twisting spring only).
 ///
-/// When capped, the springs are rewritten so that spring + damping equals the
-/// capped friction.  engines/lammps/README.md documents the model.
+/// The rolling force is capped by itself at mu_roll F_c.  When capped, the
+/// springs are rewritten so that spring + damping equals the capped value.
+/// engines/lammps/README.md documents the model.
 
 #ifndef SPINSLIDE_LAMMPS_SPINSLIDE_CONTACT_H
 #define SPINSLIDE_LAMMPS_SPINSLIDE_CONTACT_H
 
 #include "error.h"
+#include "granular_model.h"
 
 #include <spinslide/profile.hpp>
 #include <spinslide/trial_cap.hpp>
@@ -61,55 +67,19 @@ enum : int {
                      ///< eps (0: none), then F, T, F' and F'' there, the warm start
   kHistSliding = 9,  ///< 1 if the last force computation capped the contact (its
                      ///< sliding state, for compute pair/local), else 0
-  kHistSize = 10
+  kHistRoll = 10,    ///< rolling spring displacement, 3 components (lab frame)
+  kHistSize = 13
 };
-
-/// The effective Young's modulus E* of two materials (Hertz).
-inline double effective_youngs(double e1, double nu1, double e2, double nu2) {
-  return 1 / ((1 - nu1 * nu1) / e1 + (1 - nu2 * nu2) / e2);
-}
-/// The effective shear modulus G* of two materials (Mindlin).
-inline double effective_shear(double e1, double nu1, double e2, double nu2) {
-  return 1 / ((2 * (2 - nu1) * (1 + nu1) / e1) + (2 * (2 - nu2) * (1 + nu2) / e2));
-}
-
-/// The constants of one pair of materials.
-struct ContactLaw {
-  double kn = 0.0;             ///< (4/3) E*: F_n = kn d a
-  double kt = 0.0;             ///< 8 G*: k_t = kt a
-  double eta_n = 0.0;          ///< viscoelastic normal damping: gamma_n = eta_n a m*
-  double xgammat = 1.0;        ///< gamma_t = xgammat gamma_n
-  double mu = 0.0;             ///< friction coefficient
-  bool limit_damping = false;  ///< the normal force not below 0 (LAMMPS' limit_damping)
-  bool tsuji = false;          ///< eta_n is Tsuji's alpha(e): gamma_n = alpha sqrt(m* kn a)
-};
-
-/// Tsuji's damping coefficient alpha for a coefficient of restitution e
-/// (Tsuji, Tanaka and Ishida 1992, the polynomial fit LAMMPS' `damping
-/// tsuji` uses), evaluated with the same products as LAMMPS' pair granular
-/// (e^4 = (e e)(e e), e^5 = e e^4, e^6 = (e e) e^4), so that the two agree
-/// to the last bit.
-inline double tsuji_alpha(double e) {
-  const double e2 = e * e, e3 = e2 * e, e4 = e2 * e2, e5 = e * e4, e6 = e2 * e4;
-  return 1.2728 - 4.2783 * e + 11.087 * e2 - 22.348 * e3 + 27.467 * e4 - 18.022 * e5 + 4.8218 * e6;
-}
-
-/// The same fit with the powers by std::pow, as LAMMPS' fix wall/gran
-/// evaluates it (the last bits may differ from tsuji_alpha; each reproduces
-/// its own LAMMPS style).
-inline double tsuji_alpha_by_pow(double e) {
-  return 1.2728 - 4.2783 * e + 11.087 * std::pow(e, 2) - 22.348 * std::pow(e, 3) +
-         27.467 * std::pow(e, 4) - 18.022 * std::pow(e, 5) + 4.8218 * std::pow(e, 6);
-}
 
 /// One contact's geometry and relative motion, seen from the sphere.
 struct ContactState {
   double n[3];        ///< unit normal, from the partner to the sphere
   double delta;       ///< overlap
-  double reff;        ///< effective radius R* (a wall: the sphere's radius)
+  double reff;        ///< effective radius R* (a flat wall: the sphere's radius)
   double meff;        ///< effective mass m* (a wall: the sphere's mass)
   double vr[3];       ///< velocity of the sphere's centre relative to the partner's
   double wr[3];       ///< r_i w_i + r_j w_j (a wall: r_i w_i)
+  double relrot[3];   ///< w_i - w_j (a wall: w_i)
   double twist_rate;  ///< (w_i - w_j).n (a wall: w_i.n)
 };
 
@@ -140,8 +110,9 @@ struct ContactForce {
   double fn;     ///< normal force, along n
   double fs[3];  ///< friction force
   double mt;     ///< twisting torque about n
+  double fr[3];  ///< rolling resistance force (its torque: R* n x fr)
   double a;      ///< patch radius
-  bool capped;   ///< at the friction limit (sliding)
+  bool capped;   ///< the friction (F_t, M) at its limit (sliding)
 };
 
 namespace detail {
@@ -155,41 +126,104 @@ inline const spinslide::hertz<double>& hertz_patch() {
   return patch;
 }
 
-// Independent caps (pair_style granular's and fix wall/gran's mindlin +
-// marshall): the springs h (already rotated and stretched) in, the friction
-// force fs and twisting torque mt out; true if capped.
-inline bool friction_uncoupled(double* h, const double* vtr, double twist_rate, double kt,
-                               double damp_t, double k_tw, double damp_tw, double fscrit,
-                               double mtcrit, double* fs, double& mt) {
-  bool capped = false;
-  fs[0] = -kt * h[0] - damp_t * vtr[0];
-  fs[1] = -kt * h[1] - damp_t * vtr[1];
-  fs[2] = -kt * h[2] - damp_t * vtr[2];
-  const double fmag = std::sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
-  if (fmag > fscrit) {
-    capped = true;
-    const double hmag = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
-    if (hmag != 0.0) {
-      // the spring that, with the damping, gives the capped force
-      for (int k = 0; k < 3; ++k) h[k] = -1.0 / kt * (fscrit * fs[k] / fmag + damp_t * vtr[k]);
-      const double scale = fscrit / fmag;
-      fs[0] *= scale;
-      fs[1] *= scale;
-      fs[2] *= scale;
-    } else {
-      fs[0] = fs[1] = fs[2] = 0.0;
-    }
-  }
+// The normal force and what the friction needs of it.
+struct NormalForce {
+  double fn;              // the normal force, damping included
+  double fncrit;          // the load of the friction limits
+  double a;               // the patch radius
+  double damp_prefactor;  // gamma_n: the normal damping force per normal velocity
+};
 
-  mt = -k_tw * h[kHistTwist] - damp_tw * twist_rate;
-  if (std::fabs(mt) > mtcrit) {
-    capped = true;
-    // LAMMPS caps against the spin's direction, not the trial's
-    const double spin_sign = (twist_rate > 0) - (twist_rate < 0);
-    h[kHistTwist] = 1.0 / k_tw * (mtcrit * spin_sign - damp_tw * twist_rate);
-    mt = -mtcrit * spin_sign;
+inline NormalForce normal_force(const ContactLaw& law, const ContactState& s) {
+  const double vnnr = s.vr[0] * s.n[0] + s.vr[1] * s.n[1] + s.vr[2] * s.n[2];
+  const double dr = s.delta * s.reff;
+  double a = 0.0, fne = 0.0, knfac = law.kn;
+  if (law.normal == NormalModel::kJkr) {
+    jkr_patch(law, s.reff, dr, a, fne);
+    knfac = law.kn * a;
+  } else {
+    fne = knfac * s.delta;
+    a = std::sqrt(dr);
+    if (law.normal != NormalModel::kHooke) {
+      fne *= a;
+      knfac *= a;
+    }
+    if (law.normal == NormalModel::kDmt) fne -= 4 * kPi * law.cohesion * s.reff;
   }
-  return capped;
+  double damp_normal = 0.0;
+  switch (law.damping) {
+    case DampingModel::kVelocity:
+      damp_normal = 1;
+      break;
+    case DampingModel::kMassVelocity:
+      damp_normal = s.meff;
+      break;
+    case DampingModel::kViscoelastic:
+      damp_normal = a * s.meff;
+      break;
+    case DampingModel::kTsuji:
+      damp_normal = std::sqrt(s.meff * knfac);
+      break;
+  }
+  NormalForce out{0.0, 0.0, a, law.damp * damp_normal};
+  out.fn = fne + (-out.damp_prefactor * vnnr);
+  // limit_damping: the damping may not pull the spheres together (as
+  // LAMMPS' pair granular, before the friction limit is taken from |F_n|).
+  if (law.limit_damping && out.fn < 0.0) out.fn = 0.0;
+  if (law.normal == NormalModel::kJkr)
+    out.fncrit = std::fabs(fne + 2 * (3 * kPi * law.cohesion * s.reff));
+  else if (law.normal == NormalModel::kDmt)
+    out.fncrit = std::fabs(fne + 2 * (4 * kPi * law.cohesion * s.reff));
+  else
+    out.fncrit = std::fabs(out.fn);
+  return out;
+}
+
+// Keeps a spring h (3 components) in the contact's tangent plane as the
+// plane turns: drops its normal part and restores its length, when that
+// part matters against the limit `crit` at stiffness k.
+inline void keep_in_plane(double* h, const double* n, double k, double crit) {
+  const double hn = h[0] * n[0] + h[1] * n[1] + h[2] * n[2];
+  if (!(std::fabs(hn) * k > kFrameTolerance * crit)) return;
+  const double len = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+  h[0] -= hn * n[0];
+  h[1] -= hn * n[1];
+  h[2] -= hn * n[2];
+  const double plen = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+  const double scale = plen > 0 ? len / plen : 0;
+  h[0] *= scale;
+  h[1] *= scale;
+  h[2] *= scale;
+}
+
+// A spring force f = -k h - g v capped at crit: the spring h rewritten to
+// hold the capped force with the damping.  True if capped.
+inline bool cap_spring(double* h, const double* v, double k, double g, double crit, double* f) {
+  f[0] = -k * h[0] - g * v[0];
+  f[1] = -k * h[1] - g * v[1];
+  f[2] = -k * h[2] - g * v[2];
+  const double fmag = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+  if (!(fmag > crit)) return false;
+  const double hmag = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+  if (hmag != 0.0) {
+    for (int c = 0; c < 3; ++c) h[c] = -1.0 / k * (crit * f[c] / fmag + g * v[c]);
+    for (int c = 0; c < 3; ++c) f[c] *= crit / fmag;
+  } else {
+    f[0] = f[1] = f[2] = 0.0;
+  }
+  return true;
+}
+
+// The twisting spring's torque capped at mtcrit (LAMMPS caps against the
+// spin's direction, not the trial's).  True if capped.
+inline bool cap_twist(double* h, double twist_rate, double k_tw, double damp_tw, double mtcrit,
+                      double& mt) {
+  mt = -k_tw * h[kHistTwist] - damp_tw * twist_rate;
+  if (!(std::fabs(mt) > mtcrit)) return false;
+  const double spin_sign = (twist_rate > 0) - (twist_rate < 0);
+  h[kHistTwist] = 1.0 / k_tw * (mtcrit * spin_sign - damp_tw * twist_rate);
+  mt = -mtcrit * spin_sign;
+  return true;
 }
 
 // The history's curve point (kHistRatio and the four values after it).
@@ -201,6 +235,12 @@ inline void store_curve_point(const spinslide::curve_point<double>& p, double* h
   h[kHistRatio + 4] = p.curvature;
 }
 
+// The springs of one contact (their stiffness and damping at this step).
+struct Springs {
+  double kt, damp_t;     // tangential
+  double k_tw, damp_tw;  // twisting
+};
+
 // The coupled cap on spinslide's Hertz limit set, at the load `load` = mu N
 // with patch radius a: spinslide::cap_trial_state (trial_cap.hpp) on the
 // springs h (already rotated and stretched) and the damping, which keeps
@@ -210,33 +250,32 @@ inline void store_curve_point(const spinslide::curve_point<double>& p, double* h
 // friction fs and twisting torque mt out; true if capped.  It raises no
 // error for numerical reasons; a non-finite input (lost atoms) is a domain
 // error.
-inline bool friction_coupled(double* h, const double* vtr, double twist_rate, double kt,
-                             double damp_t, double k_tw, double damp_tw, double load, double a,
-                             double* fs, double& mt) {
+inline bool friction_coupled(double* h, const double* vtr, double twist_rate, const Springs& k,
+                             double load, double a, double* fs, double& mt) {
   // No trial friction (a new contact, an exact touch with a = 0): nothing
   // to cap, nothing to rewrite.
-  const double trial_force[3] = {-kt * h[0] - damp_t * vtr[0], -kt * h[1] - damp_t * vtr[1],
-                                 -kt * h[2] - damp_t * vtr[2]};
-  const double trial_torque = -k_tw * h[kHistTwist] - damp_tw * twist_rate;
+  const double trial_force[3] = {-k.kt * h[0] - k.damp_t * vtr[0], -k.kt * h[1] - k.damp_t * vtr[1],
+                                 -k.kt * h[2] - k.damp_t * vtr[2]};
+  const double trial_torque = -k.k_tw * h[kHistTwist] - k.damp_tw * twist_rate;
   if (trial_force[0] == 0.0 && trial_force[1] == 0.0 && trial_force[2] == 0.0 &&
       trial_torque == 0.0) {
     fs[0] = fs[1] = fs[2] = mt = 0.0;
     return false;
   }
-  if (!(load > 0.0) || !(a > 0.0) || !(kt > 0.0) || !(k_tw > 0.0)) {
+  if (!(load > 0.0) || !(a > 0.0) || !(k.kt > 0.0) || !(k.k_tw > 0.0)) {
     // no load, no friction: the springs hold only the damping
     fs[0] = fs[1] = fs[2] = mt = 0.0;
-    if (kt > 0.0)
-      for (int k = 0; k < 3; ++k) h[k] = -(damp_t * vtr[k]) / kt;
-    if (k_tw > 0.0) h[kHistTwist] = -(damp_tw * twist_rate) / k_tw;
+    if (k.kt > 0.0)
+      for (int c = 0; c < 3; ++c) h[c] = -(k.damp_t * vtr[c]) / k.kt;
+    if (k.k_tw > 0.0) h[kHistTwist] = -(k.damp_tw * twist_rate) / k.k_tw;
     return true;
   }
   using vec = std::array<double, 3>;
   const spinslide::spring_trial<vec, double> trial{
       vec{h[0], h[1], h[2]}, h[kHistTwist],
-      vec{-damp_t * vtr[0], -damp_t * vtr[1], -damp_t * vtr[2]}, -damp_tw * twist_rate};
-  const spinslide::spring_stiffness<double> springs{spinslide::tangential_stiffness<double>{kt},
-                                                    spinslide::twisting_stiffness<double>{k_tw}};
+      vec{-k.damp_t * vtr[0], -k.damp_t * vtr[1], -k.damp_t * vtr[2]}, -k.damp_tw * twist_rate};
+  const spinslide::spring_stiffness<double> springs{spinslide::tangential_stiffness<double>{k.kt},
+                                                    spinslide::twisting_stiffness<double>{k.k_tw}};
   const spinslide::force_contact<double> contact{spinslide::patch_radius<double>{a},
                                                  spinslide::normal_force<double>{load},
                                                  spinslide::friction_coefficient<double>{1.0}};
@@ -244,9 +283,9 @@ inline bool friction_coupled(double* h, const double* vtr, double twist_rate, do
   const auto r =
       spinslide::cap_trial_state(hertz_patch(), trial, springs, contact,
                                  spinslide::curve_point<double>{c[0], c[1], c[2], c[3], c[4]});
-  for (int k = 0; k < 3; ++k) {
-    fs[k] = r.force[k];
-    h[k] = r.displacement[k];
+  for (int i = 0; i < 3; ++i) {
+    fs[i] = r.force[i];
+    h[i] = r.displacement[i];
   }
   mt = r.torque;
   h[kHistTwist] = r.twist;
@@ -254,81 +293,97 @@ inline bool friction_coupled(double* h, const double* vtr, double twist_rate, do
   return !r.sticking;
 }
 
+// Viscous friction without a spring (tangential linear_nohistory): the
+// damping force along the slip, capped at fscrit.
+inline void friction_viscous(const double* vtr, double damp_t, double fscrit, double* fs,
+                             bool& capped) {
+  const double vrel = std::sqrt(vtr[0] * vtr[0] + vtr[1] * vtr[1] + vtr[2] * vtr[2]);
+  const double f = damp_t * vrel;
+  capped = f > fscrit;
+  const double ft = vrel != 0.0 ? std::fmin(fscrit, f) / vrel : 0.0;
+  fs[0] = -ft * vtr[0];
+  fs[1] = -ft * vtr[1];
+  fs[2] = -ft * vtr[2];
+}
+
+// The rolling resistance (sds): its spring (history kHistRoll) advanced
+// by R* (w_i - w_j) x n dt if `advance`, the force capped at mu_roll F_c.
+inline void rolling_resistance(const ContactLaw& law, const ContactState& s, double* history,
+                               double dt, bool advance, double fncrit, double* fr) {
+  const double* n = s.n;
+  const double* w = s.relrot;
+  const double vrl[3] = {s.reff * (w[1] * n[2] - w[2] * n[1]), s.reff * (w[2] * n[0] - w[0] * n[2]),
+                         s.reff * (w[0] * n[1] - w[1] * n[0])};
+  double* h = history + kHistRoll;
+  const double frcrit = law.mu_roll * fncrit;
+  if (advance) {
+    keep_in_plane(h, n, law.k_roll, frcrit);
+    for (int c = 0; c < 3; ++c) h[c] += vrl[c] * dt;
+  }
+  cap_spring(h, vrl, law.k_roll, law.gamma_roll, frcrit, fr);
+}
+
 }  // namespace detail
 
 /// One contact's forces from its state and history (kHistSize values),
 /// advancing the springs by dt if `advance` (not during LAMMPS' setup), the
-/// friction capped together (`coupled`) or independently.  A non-finite
+/// friction capped together (`coupled`, where the law has a tangential
+/// spring and Marshall's twisting spring) or independently.  A non-finite
 /// input to the cap is reported through `error->one` with `style` in the
 /// message.
 inline void contact_force(const ContactLaw& law, const ContactState& s, double* history, double dt,
                           bool advance, bool coupled, LAMMPS_NS::Error* error, const char* style,
                           ContactForce& out) {
-  const double nx = s.n[0], ny = s.n[1], nz = s.n[2];
-  const double vr1 = s.vr[0], vr2 = s.vr[1], vr3 = s.vr[2];
-  const double vnnr = vr1 * nx + vr2 * ny + vr3 * nz;
-
-  // Hertz with viscoelastic damping
-  const double a = std::sqrt(s.delta * s.reff);
-  const double fn_elastic = law.kn * s.delta * a;
-  const double damp_n =
-      law.tsuji ? law.eta_n * std::sqrt(s.meff * (law.kn * a)) : law.eta_n * (a * s.meff);
-  double fn = fn_elastic + (-damp_n * vnnr);
-  // limit_damping: the damping may not pull the spheres together (as
-  // LAMMPS' pair granular, before the friction limit is taken from |F_n|).
-  if (law.limit_damping && fn < 0.0) fn = 0.0;
-  const double load_n = std::fabs(fn);
-  const double fscrit = law.mu * load_n;
+  const detail::NormalForce normal = detail::normal_force(law, s);
+  const double a = normal.a;
+  const double fscrit = law.mu * normal.fncrit;
+  out.fn = normal.fn;
+  out.a = a;
+  out.mt = 0.0;
+  out.fr[0] = out.fr[1] = out.fr[2] = 0.0;
 
   double vtr[3];
   slip_velocity(s, vtr);
-
-  // Mindlin and Marshall springs and their damping
-  const double kt = law.kt * a;
-  const double damp_t = law.xgammat * damp_n;
-  const double k_tw = 0.5 * kt * a * a;
-  const double damp_tw = 0.5 * damp_t * a * a;
-  const double twist_rate = s.twist_rate;
-
-  if (advance) {
-    // Keep the tangential spring in the tangent plane as the contact turns:
-    // drop its normal part and restore its length.
-    const double hn = history[0] * nx + history[1] * ny + history[2] * nz;
-    if (std::fabs(hn) * kt > detail::kFrameTolerance * fscrit) {
-      const double len =
-          std::sqrt(history[0] * history[0] + history[1] * history[1] + history[2] * history[2]);
-      history[0] -= hn * nx;
-      history[1] -= hn * ny;
-      history[2] -= hn * nz;
-      const double plen =
-          std::sqrt(history[0] * history[0] + history[1] * history[1] + history[2] * history[2]);
-      const double scale = plen > 0 ? len / plen : 0;
-      history[0] *= scale;
-      history[1] *= scale;
-      history[2] *= scale;
-    }
-    history[0] += vtr[0] * dt;
-    history[1] += vtr[1] * dt;
-    history[2] += vtr[2] * dt;
-    history[kHistTwist] += twist_rate * dt;
+  detail::Springs k{law.kt, law.xgammat * normal.damp_prefactor, 0.0, 0.0};
+  if (law.tangential == TangentialModel::kMindlin) k.kt *= a;
+  double mtcrit = 0.0;
+  if (law.twist == TwistModel::kMarshall) {
+    k.k_tw = 0.5 * k.kt * a * a;
+    k.damp_tw = 0.5 * k.damp_t * a * a;
+    mtcrit = (2.0 / 3.0) * a * law.mu * normal.fncrit;
+  } else if (law.twist == TwistModel::kSds) {
+    k.k_tw = law.k_twist;
+    k.damp_tw = law.gamma_twist;
+    mtcrit = law.mu_twist * normal.fncrit;
   }
 
-  out.fn = fn;
-  out.a = a;
-  if (coupled) {
+  if (advance && law.tangential_spring()) {
+    detail::keep_in_plane(history + kHistShear, s.n, k.kt, fscrit);
+    for (int c = 0; c < 3; ++c) history[kHistShear + c] += vtr[c] * dt;
+  }
+  if (advance && law.twist != TwistModel::kNone) history[kHistTwist] += s.twist_rate * dt;
+
+  if (!law.tangential_spring()) {
+    detail::friction_viscous(vtr, k.damp_t, fscrit, out.fs, out.capped);
+    if (law.twist != TwistModel::kNone)
+      out.capped =
+          detail::cap_twist(history, s.twist_rate, k.k_tw, k.damp_tw, mtcrit, out.mt) || out.capped;
+  } else if (coupled && law.couplable()) {
     try {
-      out.capped = detail::friction_coupled(history, vtr, twist_rate, kt, damp_t, k_tw, damp_tw,
-                                            fscrit, a, out.fs, out.mt);
+      out.capped =
+          detail::friction_coupled(history, vtr, s.twist_rate, k, fscrit, a, out.fs, out.mt);
     } catch (std::exception& e) {
       // Only a non-finite input reaches here (the cap raises nothing for
       // numerical reasons): lost atoms or a broken overlap.
       error->one(FLERR, "{}: a contact's friction input is not finite: {}", style, e.what());
     }
   } else {
-    const double mtcrit = (2.0 / 3.0) * a * law.mu * load_n;
-    out.capped = detail::friction_uncoupled(history, vtr, twist_rate, kt, damp_t, k_tw, damp_tw,
-                                            fscrit, mtcrit, out.fs, out.mt);
+    out.capped = detail::cap_spring(history + kHistShear, vtr, k.kt, k.damp_t, fscrit, out.fs);
+    if (law.twist != TwistModel::kNone)
+      out.capped =
+          detail::cap_twist(history, s.twist_rate, k.k_tw, k.damp_tw, mtcrit, out.mt) || out.capped;
   }
+  if (law.rolling) detail::rolling_resistance(law, s, history, dt, advance, normal.fncrit, out.fr);
   history[kHistSliding] = out.capped ? 1.0 : 0.0;
 }
 

@@ -10,6 +10,7 @@
 # WALL=drum: the spheres in a turning drum (fix wall/gran/region/spinslide);
 # the reading log must also say that the wall's contacts and the region's
 # motion were restored (no run with LAMMPS' own styles then).
+include("${CMAKE_CURRENT_LIST_DIR}/lammps_run.cmake")
 foreach(var LMP PLUGIN INPUT COMPARE DIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "restart.cmake: pass -D${var}=...")
@@ -23,10 +24,7 @@ if(NOT DEFINED WALL)
 endif()
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
-set(launcher "")
-if(NP AND NP GREATER 1)
-  set(launcher "${MPIEXEC}" --allow-run-as-root --oversubscribe -np ${NP})
-endif()
+lammps_launcher(launcher)
 function(lammps phase out)
   execute_process(
     COMMAND ${launcher} "${LMP}" -in "${INPUT}" -var phase ${phase} -var plugin "${PLUGIN}"

@@ -3,8 +3,9 @@
 # (<DIR>/ab_<model>.dump: the inputs' variable `out` is set so) with
 # compare_dumps at TOL.
 #   cmake -DLMP=... -DPLUGIN=... -DINPUT=... -DA=stock -DB=uncoupled -DCOMPARE=...
-#         -DDIR=... [-DNP=2 -DMPIEXEC=mpirun] [-DTOL=0] [-DVARS="name value;..."]
+#         -DDIR=... [-DNP=2 -DMPIEXEC=mpirun] [-DTOL=0] [-DVARS="name value|..."]
 #         -P run_ab.cmake
+include("${CMAKE_CURRENT_LIST_DIR}/lammps_run.cmake")
 foreach(var LMP PLUGIN INPUT A B COMPARE DIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run_ab.cmake: pass -D${var}=...")
@@ -14,17 +15,8 @@ if(NOT DEFINED TOL)
   set(TOL 0)
 endif()
 file(MAKE_DIRECTORY "${DIR}")
-set(launcher "")
-if(NP AND NP GREATER 1)
-  # Root (as in CI) needs --allow-run-as-root; --oversubscribe lets 2 ranks
-  # run where fewer cores are free.
-  set(launcher "${MPIEXEC}" --allow-run-as-root --oversubscribe -np ${NP})
-endif()
-set(extra "")
-foreach(pair IN LISTS VARS)
-  separate_arguments(words UNIX_COMMAND "${pair}")
-  list(APPEND extra -var ${words})
-endforeach()
+lammps_launcher(launcher)
+lammps_var_args(extra)
 foreach(model IN ITEMS ${A} ${B})
   execute_process(
     COMMAND ${launcher} "${LMP}" -in "${INPUT}" -var model ${model} -var plugin "${PLUGIN}"

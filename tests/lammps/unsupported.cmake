@@ -8,15 +8,16 @@ foreach(var LMP PLUGIN INPUT DIR)
 endforeach()
 file(MAKE_DIRECTORY "${DIR}")
 set(expected
-  "pair_coeff granular/spinslide: hertz/material: the plugin's contact model is fixed"
+  "pair_coeff granular/spinslide: tangential mindlin_rescale: the plugin has linear_nohistory, linear_history and mindlin"
   "pair_coeff granular/spinslide: cutoff must be > 0 \\(leave it out for the automatic cutoff"
   "Fix wall/gran/spinslide: region: a region wall is fix wall/gran/region/spinslide"
-  "pair_coeff granular/spinslide: rolling: rolling resistance and cohesion"
-  "Fix wall/gran/spinslide: with damping tsuji, the second number is the coefficient of restitution"
-  "pair_coeff granular/spinslide: with damping tsuji, the second number is the coefficient of restitution"
+  "Pair granular/spinslide: coupling yes needs twisting marshall"
+  "Fix wall/gran/spinslide: with damping tsuji, the damping number is the coefficient of restitution"
+  "pair_coeff granular/spinslide: with damping tsuji, the damping number is the coefficient of restitution"
   "Fix wall/gran/region/spinslide: region nosuch does not exist"
   "Fix wall/gran/spinslide: a zcylinder wall needs x and y not periodic"
-  "Fix wall/gran/spinslide: wiggle: moving walls, per-contact output and heat conduction")
+  "Fix wall/gran/spinslide: wiggle: the plane and cylinder walls are fixed in space: move a region wall"
+  "Fix wall/gran/spinslide: jkr walls are not supported")
 set(case 0)
 foreach(message IN LISTS expected)
   math(EXPR case "${case} + 1")
