@@ -8,7 +8,10 @@
 // fix_spinslide_history.h says why this class exists.
 #include "fix_spinslide_history.h"
 
+#include "atom.h"
 #include "comm.h"
+#include "error.h"
+#include "my_page.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -32,4 +35,36 @@ void FixSpinslideHistory::write_restart(FILE* fp) {
     int size = 0;
     fwrite(&size, sizeof(int), 1, fp);
   }
+}
+
+void FixSpinslideHistory::unpack_restart(int nlocal, int nth) {
+  const double* extra = atom->extra[nlocal];
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[m]);
+  // the record: its length, the partners' count, then per partner its ID
+  // and dnum values
+  const int length = static_cast<int>(extra[m]);
+  const int count = static_cast<int>(extra[m + 1]);
+  if (count >= 0 && length == 2 + count * (dnum + 1)) {
+    FixNeighHistory::unpack_restart(nlocal, nth);
+    return;
+  }
+  if (ipage_atom == nullptr) allocate_pages();
+  npartner[nlocal] = 0;
+  partner[nlocal] = ipage_atom->get(0);
+  valuepartner[nlocal] = dpage_atom->get(0);
+  ++dropped_;
+}
+
+void FixSpinslideHistory::init() {
+  FixNeighHistory::init();
+  int dropped = 0;
+  MPI_Allreduce(&dropped_, &dropped, 1, MPI_INT, MPI_SUM, world);
+  if (dropped > 0 && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair granular/spinslide: the restart file's contact history of {} atoms has "
+                   "another layout (an earlier plugin's): dropped, their contacts start with "
+                   "unloaded springs",
+                   dropped);
+  dropped_ = 0;
 }

@@ -19,6 +19,12 @@
 // shows the same (42).  Here write_restart() skips the copy when post_run()
 // made it at this step outside a run; during a run (the restart command's
 // periodic files) it copies as LAMMPS does, through the current list.
+//
+// It also checks each atom's restart record against its own length: a file
+// whose history has another number of values per contact (written by an
+// earlier plugin whose history was shorter) would otherwise be read as
+// garbage.  Such records are dropped, with a warning: those contacts start
+// with unloaded springs.
 #ifndef SPINSLIDE_LAMMPS_FIX_SPINSLIDE_HISTORY_H
 #define SPINSLIDE_LAMMPS_FIX_SPINSLIDE_HISTORY_H
 
@@ -31,9 +37,12 @@ class FixSpinslideHistory : public FixNeighHistory {
   FixSpinslideHistory(class LAMMPS* lmp, int narg, char** arg);
   void post_run() override;
   void write_restart(FILE* fp) override;
+  void unpack_restart(int nlocal, int nth) override;
+  void init() override;
 
  private:
   bigint synced_step_ = -1;  // the step post_run() copied the history at
+  int dropped_ = 0;          // restart records of another layout dropped on this rank
 };
 
 }  // namespace LAMMPS_NS

@@ -249,6 +249,14 @@ void FixWallGranRegionSpinslide::unpack_restart(int nlocal, int nth) {
   const double* extra = atom->extra[nlocal];
   int m = 0;
   for (int skip = 0; skip < nth; skip++) m += static_cast<int>(extra[m]);
+  // a record of another layout (an earlier plugin's shorter history) is
+  // dropped, with a warning at init(): the sphere starts without contacts
+  const int count = static_cast<int>(ubuf(extra[m + 1]).i);
+  if (count < 0 || count > tmax || static_cast<int>(extra[m]) != 2 + count * (kHistSize + 1)) {
+    ncontact[nlocal] = 0;
+    ++dropped;
+    return;
+  }
   unpack_atom(nlocal, extra + m + 1);
 }
 

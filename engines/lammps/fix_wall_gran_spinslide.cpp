@@ -25,6 +25,7 @@
 #include "keywords.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "memory.h"
@@ -217,6 +218,14 @@ int FixWallGranSpinslide::setmask() { return POST_FORCE; }
 
 void FixWallGranSpinslide::init() {
   dt = update->dt;
+  int dropped_all = 0;
+  MPI_Allreduce(&dropped, &dropped_all, 1, MPI_INT, MPI_SUM, world);
+  if (dropped_all > 0 && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix {}: the restart file's wall history of {} atoms has another layout (an "
+                   "earlier plugin's): dropped, those contacts start unloaded",
+                   style, dropped_all);
+  dropped = 0;
   // moduli legacy with damping tsuji: LAMMPS 29 Sep 2021's fix wall/gran
   // turns its damping number into Tsuji's alpha at every init (every run),
   // so that a second run damps with alpha(alpha(e)); reproduced for A/B
@@ -413,10 +422,16 @@ void FixWallGranSpinslide::unpack_restart(int nlocal, int nth) {
   const double* extra = atom->extra[nlocal];
   int m = 0;
   for (int skip = 0; skip < nth; skip++) m += static_cast<int>(extra[m]);
+  // a record of another length (an earlier plugin's shorter history) is
+  // dropped, with a warning at init(): the contact starts unloaded
+  if (static_cast<int>(extra[m]) != kHistSize + 1) {
+    for (int k = 0; k < kHistSize; k++) history[nlocal][k] = 0.0;
+    ++dropped;
+    return;
+  }
   m++;
   for (int k = 0; k < kHistSize; k++) history[nlocal][k] = extra[m + k];
 }
-
 int FixWallGranSpinslide::size_restart(int /*nlocal*/) { return kHistSize + 1; }
 
 int FixWallGranSpinslide::maxsize_restart() { return kHistSize + 1; }

@@ -97,6 +97,7 @@ class FixWallGranSpinslide : public Fix {
   int coupled = 1;         // 1: the coupled cap (default); 0: independent caps
   int legacy_moduli = 0;   // 1: LAMMPS 2021 fix wall/gran's (4/3)E* and 8G*
   int ninit = 0;           // how many times init() ran (moduli legacy, damping tsuji)
+  int dropped = 0;         // restart records of another layout dropped on this rank
 
   spinslide_lammps::ContactLaw law;  // the wall's contact law, resolved
 
