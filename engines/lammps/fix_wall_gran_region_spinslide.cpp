@@ -45,6 +45,9 @@ FixWallGranRegionSpinslide::FixWallGranRegionSpinslide(LAMMPS* lmp, int narg, ch
   region_style = region->style;
   nregion = region->nregion;
   tmax = region->tmax;
+  if (tmax > kMaxSlots)
+    error->all(FLERR, "Fix {}: region {} lets a sphere touch {} faces at once, more than {}", style,
+               idregion, tmax, kMaxSlots);
   restart_global = 1;
 
   // the base's one history per atom is replaced by one per contact
@@ -163,6 +166,15 @@ void FixWallGranRegionSpinslide::match_contacts(int i, int nc) {
     slot_of_contact[c] = s;
   }
   ncontact[i] = n;
+  // slots legacy: LAMMPS 29 Sep 2021's fix wall/gran/region indexes its
+  // slot-to-contact map with the contact (history_many[i][c2r[ic]]), which
+  // gives a sphere touching three faces another face's history when their
+  // order turns; reproduced for A/B runs only (issue 30, in.granregion.box)
+  if (legacy_slots && nc > 2) {
+    int contact_in_slot[kMaxSlots];
+    for (int c = 0; c < nc; c++) contact_in_slot[slot_of_contact[c]] = c;
+    for (int c = 0; c < nc; c++) slot_of_contact[c] = contact_in_slot[c];
+  }
 }
 
 /* ---------------------------------------------------------------------- */

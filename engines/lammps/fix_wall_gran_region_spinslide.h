@@ -58,6 +58,8 @@ class FixWallGranRegionSpinslide : public FixWallGranSpinslide {
   /// Atom i's per-atom values from buf; returns how many were read.
   int unpack_atom(int i, const double* buf);
 
+  static constexpr int kMaxSlots = 64;  // the most faces a sphere may touch at once
+
   class Region* region = nullptr;
   std::string region_style;  // the region's style and number of sub-regions when
   int nregion = 0;           // created, to notice a region redefined between runs

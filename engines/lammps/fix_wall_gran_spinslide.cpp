@@ -28,6 +28,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -76,19 +77,9 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
       error->all(FLERR, "Fix {}: region: a region wall is fix wall/gran/region/spinslide", style);
   if (narg < 6) error->all(FLERR, "Illegal fix {} command: {}", style, syntax(region_style));
 
-  // the law: LAMMPS' model keywords after `granular`, or the short form
-  const bool lammps_form = strcmp(arg[3], "granular") == 0;
-  const std::vector<std::string> words(arg + (lammps_form ? 4 : 3), arg + narg);
-  if (!lammps_form && (words.size() < 4 || !utils::is_double(arg[3])))
-    error->all(FLERR, "Illegal fix {} command: {}", style, syntax(region_style));
-  const spinslide_lammps::NumberReader number = [lmp](const std::string& w) {
-    return utils::numeric(FLERR, w.c_str(), false, lmp);
-  };
-  spinslide_lammps::ContactLaw read;
   std::vector<std::string> rest;
-  std::string why = spinslide_lammps::parse_lammps_model(
-      lammps_form ? words : spinslide_lammps::expand_short_form(words), number, read, rest);
-  if (why.empty()) why = spinslide_lammps::check_law(read);
+  const spinslide_lammps::ContactLaw read = read_law(narg, arg, rest);
+  std::string why = spinslide_lammps::check_law(read);
   if (why.empty() && read.normal == spinslide_lammps::NormalModel::kJkr)
     why =
         "jkr walls are not supported (LAMMPS 29 Sep 2021's fix wall/gran takes a pull-off "
@@ -99,6 +90,9 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
   if (parse_walls_and_options(rest) != 1 || (wallstyle == WallStyle::kRegion) != region_style)
     error->all(FLERR, "Illegal fix {} command: give one wall: {}", style, syntax(region_style));
   check_walls();
+  // coupled, LAMMPS' older styles run as their equivalent with Marshall's
+  // twisting spring (legacy_contact.h)
+  if (coupled) legacy.model = spinslide_lammps::LegacyModel::kNone;
   if (coupled && read.twist == spinslide_lammps::TwistModel::kSds)
     error->all(FLERR,
                "Fix {}: coupling yes needs twisting marshall: the coupled cap takes the "
@@ -127,6 +121,40 @@ FixWallGranSpinslide::FixWallGranSpinslide(LAMMPS* lmp, int narg, char** arg)
       for (int k = 0; k < kHistSize; k++) history[i][k] = 0.0;
 
   dt = update->dt;
+}
+
+// The contact law's words: one of LAMMPS' older styles (hooke,
+// hooke/history, hertz/history and their six numbers, as fix wall/gran
+// takes them), LAMMPS' model keywords after `granular`, or the short form.
+// The words after the law go into rest.
+spinslide_lammps::ContactLaw FixWallGranSpinslide::read_law(int narg, char** arg,
+                                                            std::vector<std::string>& rest) {
+  const bool region_style = wallstyle == WallStyle::kRegion || utils::strmatch(style, "region");
+  const spinslide_lammps::NumberReader number = [this](const std::string& w) {
+    return utils::numeric(FLERR, w.c_str(), false, lmp);
+  };
+  const std::string first = arg[3];
+  std::string why;
+  spinslide_lammps::ContactLaw read;
+  if (first == "hooke" || first == "hooke/history" || first == "hertz/history") {
+    const int n = narg > 10 && strcmp(arg[10], "limit_damping") == 0 ? 8 : 7;
+    if (narg < 3 + n)
+      error->all(FLERR, "Illegal fix {} command: {} needs kn kt gamman gammat xmu dampflag", style,
+                 first);
+    why = spinslide_lammps::parse_legacy(std::vector<std::string>(arg + 3, arg + 3 + n), number,
+                                         force->nktv2p, legacy);
+    rest.assign(arg + 3 + n, arg + narg);
+    read = spinslide_lammps::modern_equivalent(legacy);
+  } else {
+    const bool lammps_form = first == "granular";
+    const std::vector<std::string> words(arg + (lammps_form ? 4 : 3), arg + narg);
+    if (!lammps_form && (words.size() < 4 || !utils::is_double(arg[3])))
+      error->all(FLERR, "Illegal fix {} command: {}", style, syntax(region_style));
+    why = spinslide_lammps::parse_lammps_model(
+        lammps_form ? words : spinslide_lammps::expand_short_form(words), number, read, rest);
+  }
+  if (!why.empty()) error->all(FLERR, "Fix {}: {}", style, why);
+  return read;
 }
 
 // The keywords after the four numbers: the wall (xplane|yplane|zplane lo
@@ -176,6 +204,9 @@ void FixWallGranSpinslide::parse_option(const std::string& key, const std::strin
   if (key == "coupling") {
     coupled = spinslide_lammps::either(value, {"yes", "on"}, {"no", "off"});
     if (coupled < 0) error->all(FLERR, "Illegal fix {} command: coupling {}", style, value);
+  } else if (key == "slots") {
+    legacy_slots = spinslide_lammps::either(value, {"legacy"}, {"exact"});
+    if (legacy_slots < 0) error->all(FLERR, "Illegal fix {} command: slots {}", style, value);
   } else if (key == "moduli") {
     legacy_moduli = spinslide_lammps::either(value, {"legacy"}, {"exact"});
     if (legacy_moduli < 0) error->all(FLERR, "Illegal fix {} command: moduli {}", style, value);
@@ -187,6 +218,8 @@ void FixWallGranSpinslide::parse_option(const std::string& key, const std::strin
 
 // The walls, checked.
 void FixWallGranSpinslide::check_walls() {
+  if (legacy_slots && wallstyle != WallStyle::kRegion)
+    error->all(FLERR, "Fix {}: slots is a keyword of region walls", style);
   if (wallstyle == WallStyle::kPlane) {
     if (!(lo < hi)) error->all(FLERR, "Fix {}: the walls need lo < hi", style);
     if (domain->periodicity[axis])
@@ -262,6 +295,10 @@ void FixWallGranSpinslide::clear_statistics() {
 ------------------------------------------------------------------------- */
 
 void FixWallGranSpinslide::apply_contact(int i, const WallTouch& touch, double* h, bool advance) {
+  if (legacy.model != spinslide_lammps::LegacyModel::kNone) {
+    apply_legacy_contact(i, touch, h, advance);
+    return;
+  }
   double** v = atom->v;
   double** f = atom->f;
   double** omega = atom->omega;
@@ -317,6 +354,51 @@ void FixWallGranSpinslide::apply_contact(int i, const WallTouch& touch, double* 
     torque[i][1] += state.reff * (nz * fr[0] - nx * fr[2]);
     torque[i][2] += state.reff * (nx * fr[1] - ny * fr[0]);
   }
+}
+
+/* ----------------------------------------------------------------------
+   sphere i against the wall at `touch` in one of LAMMPS' older styles
+   (legacy_contact.h), in fix wall/gran's arithmetic: R* from the wall's
+   curvature radius for hertz/history, the friction at r_i from the centre
+------------------------------------------------------------------------- */
+
+void FixWallGranSpinslide::apply_legacy_contact(int i, const WallTouch& touch, double* h,
+                                                bool advance) {
+  double** v = atom->v;
+  double** omega = atom->omega;
+  const double radi = atom->radius[i];
+  spinslide_lammps::LegacyContact c;
+  for (int k = 0; k < 3; ++k) {
+    c.del[k] = touch.d[k];
+    c.vr[k] = v[i][k] - touch.vwall[k];
+    c.wr[k] = radi * omega[i][k];
+  }
+  c.rsq = touch.rsq;
+  c.radsum = radi;
+  c.meff = atom->rmass[i];
+  const double r = std::sqrt(touch.rsq);
+  const double rwall = touch.rwall;
+  c.polyhertz = rwall == 0.0 ? std::sqrt((radi - r) * radi)
+                             : std::sqrt((radi - r) * radi * rwall / (rwall + radi));
+  double fij[3], tor[3];
+  const bool capped = spinslide_lammps::legacy_force(
+      legacy, c, h, dt, advance, legacy.model == spinslide_lammps::LegacyModel::kHertzHistory, fij,
+      tor);
+  h[spinslide_lammps::kHistSliding] = capped ? 1.0 : 0.0;
+  for (int k = 0; k < 3; ++k) {
+    atom->f[i][k] += fij[k];
+    atom->torque[i][k] -= radi * tor[k];
+  }
+  // the statistics: the friction is the force less its normal part
+  const double fdotd = fij[0] * c.del[0] + fij[1] * c.del[1] + fij[2] * c.del[2];
+  double fs2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double fs = fij[k] - c.del[k] * fdotd / c.rsq;
+    fs2 += fs * fs;
+  }
+  stats_local[kStatContacts] += 1.0;
+  if (capped) stats_local[kStatSliding] += 1.0;
+  stats_local[kStatForce] += std::sqrt(fs2);
 }
 
 /* ----------------------------------------------------------------------

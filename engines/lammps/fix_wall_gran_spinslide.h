@@ -26,6 +26,7 @@
 #define SPINSLIDE_LAMMPS_FIX_WALL_GRAN_SPINSLIDE_H
 
 #include "fix.h"
+#include "legacy_contact.h"
 #include "spinslide_contact.h"
 
 #include <string>
@@ -87,6 +88,8 @@ class FixWallGranSpinslide : public Fix {
   /// Sphere i's contact `touch` with history h (kHistSize values): the forces
   /// and torques added to i, the statistics counted.
   void apply_contact(int i, const WallTouch& touch, double* h, bool advance);
+  void apply_legacy_contact(int i, const WallTouch& touch, double* h, bool advance);
+  spinslide_lammps::ContactLaw read_law(int narg, char** arg, std::vector<std::string>& rest);
 
   WallStyle wallstyle = WallStyle::kPlane;
   int axis = 2;            // the planes' normal: 0 x, 1 y, 2 z
@@ -96,10 +99,12 @@ class FixWallGranSpinslide : public Fix {
   std::string idregion;    // the region (wall/gran/region/spinslide)
   int coupled = 1;         // 1: the coupled cap (default); 0: independent caps
   int legacy_moduli = 0;   // 1: LAMMPS 2021 fix wall/gran's (4/3)E* and 8G*
+  int legacy_slots = 0;    // region walls: 1 reproduces LAMMPS 2021's corner history mismatch
   int ninit = 0;           // how many times init() ran (moduli legacy, damping tsuji)
   int dropped = 0;         // restart records of another layout dropped on this rank
 
-  spinslide_lammps::ContactLaw law;  // the wall's contact law, resolved
+  spinslide_lammps::ContactLaw law;    // the wall's contact law, resolved
+  spinslide_lammps::LegacyLaw legacy;  // LAMMPS' older style, if given one (coupling no)
 
   double dt = 0.0;
   double** history = nullptr;  // per atom: spinslide_lammps::kHistSize values

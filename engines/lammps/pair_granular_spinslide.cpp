@@ -38,6 +38,7 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include "legacy_contact.h"
 #include "spinslide_contact.h"
 
 #include <algorithm>
@@ -161,8 +162,6 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
   for (int k = 0; k < nextra; ++k) pvector[k] = 0.0;
 
   double** x = atom->x;
-  const double* radius = atom->radius;
-  const int* type = atom->type;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   // setup() computes forces without advancing the springs
@@ -182,9 +181,7 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
-    const int itype = type[i];
     const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
-    const double radi = radius[i];
     int* touch = firsttouch[i];
     double* allhistory = firsthistory[i];
     const int* jlist = firstneigh[i];
@@ -195,30 +192,11 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
       const double delx = xi - x[j][0];
       const double dely = yi - x[j][1];
       const double delz = zi - x[j][2];
-      const int jtype = type[j];
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      const double radj = radius[j];
-      const double radsum = radi + radj;
       double* history = &allhistory[static_cast<std::ptrdiff_t>(kHistSize) * jj];
-      const spinslide_lammps::ContactLaw& law = contact_law(itype, jtype);
-
-      if (!spinslide_lammps::pair_touching(law, rsq, radsum, radi * radj / radsum,
-                                           touch[jj] != 0)) {
-        // apart: forget the contact
-        touch[jj] = 0;
-        for (int k = 0; k < kHistSize; ++k) history[k] = 0.0;
-        continue;
-      }
-      touch[jj] = 1;
-
-      const double r = std::sqrt(rsq);
-      const spinslide_lammps::ContactState state = contact_state(i, j, r);
       spinslide_lammps::ContactForce cf;
-      spinslide_lammps::contact_force(law, state, history, dt, advance, coupled != 0, error,
-                                      "pair granular/spinslide", cf);
-      if (tally) stats.add(cf, newton_pair, j, nlocal);
       double fij[3];
-      apply_forces(i, j, law, state, cf, newton_pair != 0 || j < nlocal, fij);
+      if (!one_pair(i, j, touch[jj], history, advance, cf, fij)) continue;
+      if (tally) stats.add(cf, newton_pair, j, nlocal);
       if (evflag)
         ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fij[0], fij[1], fij[2], delx, dely, delz);
     }
@@ -227,6 +205,46 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
   pvector[kExtraSliding] = stats.sliding;
   pvector[kExtraForce] = stats.force;
   pvector[kExtraTorque] = stats.torque;
+}
+
+/* ----------------------------------------------------------------------
+   i's neighbour j: false if apart (the contact forgotten: touch 0, the
+   history zeroed); else the contact's forces and torques applied (to j as
+   well with newton on or j owned), fij the force on i, cf its friction
+------------------------------------------------------------------------- */
+
+bool PairGranularSpinslide::one_pair(int i, int j, int& touch, double* history, bool advance,
+                                     spinslide_lammps::ContactForce& cf, double fij[3]) {
+  double** x = atom->x;
+  const int itype = atom->type[i], jtype = atom->type[j];
+  const double delx = x[i][0] - x[j][0];
+  const double dely = x[i][1] - x[j][1];
+  const double delz = x[i][2] - x[j][2];
+  const double rsq = delx * delx + dely * dely + delz * delz;
+  const double radi = atom->radius[i], radj = atom->radius[j];
+  const double radsum = radi + radj;
+  const spinslide_lammps::ContactLaw& law = contact_law(itype, jtype);
+  const spinslide_lammps::LegacyLaw& legacy = legacy_of(itype, jtype);
+  const bool is_legacy = legacy.model != spinslide_lammps::LegacyModel::kNone;
+  const bool touching = is_legacy ? rsq < radsum * radsum
+                                  : spinslide_lammps::pair_touching(
+                                        law, rsq, radsum, radi * radj / radsum, touch != 0);
+  if (!touching) {
+    touch = 0;
+    for (int k = 0; k < kHistSize; ++k) history[k] = 0.0;
+    return false;
+  }
+  touch = 1;
+  if (is_legacy) {
+    // LAMMPS' older styles, in their arithmetic
+    cf = legacy_pair(i, j, legacy, history, advance, fij);
+    return true;
+  }
+  const spinslide_lammps::ContactState state = contact_state(i, j, std::sqrt(rsq));
+  spinslide_lammps::contact_force(law, state, history, dt, advance, coupled != 0, error,
+                                  "pair granular/spinslide", cf);
+  apply_forces(i, j, law, state, cf, force->newton_pair != 0 || j < atom->nlocal, fij);
+  return true;
 }
 
 /* ----------------------------------------------------------------------
@@ -271,6 +289,53 @@ void PairGranularSpinslide::apply_forces(int i, int j, const spinslide_lammps::C
     for (int k = 0; k < 3; ++k) torque[j][k] -= tr[k];
 }
 
+/* ----------------------------------------------------------------------
+   i's contact with j in one of LAMMPS' older styles (legacy_contact.h):
+   the forces and torques added to i (and j, with newton on or j owned), as
+   gran/hooke, gran/hooke/history and gran/hertz/history compute them; fij
+   the force on i; the friction in the result, for the statistics
+------------------------------------------------------------------------- */
+
+spinslide_lammps::ContactForce PairGranularSpinslide::legacy_pair(
+    int i, int j, const spinslide_lammps::LegacyLaw& legacy, double* history, bool advance,
+    double fij[3]) {
+  double** x = atom->x;
+  double** v = atom->v;
+  double** omega = atom->omega;
+  double** f = atom->f;
+  double** torque = atom->torque;
+  const double radi = atom->radius[i], radj = atom->radius[j];
+  spinslide_lammps::LegacyContact c;
+  for (int k = 0; k < 3; ++k) {
+    c.del[k] = x[i][k] - x[j][k];
+    c.vr[k] = v[i][k] - v[j][k];
+    c.wr[k] = radi * omega[i][k] + radj * omega[j][k];
+  }
+  c.rsq = c.del[0] * c.del[0] + c.del[1] * c.del[1] + c.del[2] * c.del[2];
+  c.radsum = radi + radj;
+  c.meff = effective_mass(atom->rmass, atom->mask, freeze_group_bit, i, j);
+  c.polyhertz = std::sqrt((c.radsum - std::sqrt(c.rsq)) * radi * radj / c.radsum);
+  double tor[3];
+  spinslide_lammps::ContactForce out{};
+  out.capped = spinslide_lammps::legacy_force(legacy, c, history, dt, advance, false, fij, tor);
+  history[kHistSliding] = out.capped ? 1.0 : 0.0;
+  for (int k = 0; k < 3; ++k) {
+    f[i][k] += fij[k];
+    torque[i][k] -= radi * tor[k];
+  }
+  if (force->newton_pair || j < atom->nlocal) {
+    for (int k = 0; k < 3; ++k) {
+      f[j][k] -= fij[k];
+      torque[j][k] -= radj * tor[k];
+    }
+  }
+  // the friction, for the statistics: the force less its normal part
+  const double rsqinv = 1.0 / c.rsq;
+  const double fdotd = fij[0] * c.del[0] + fij[1] * c.del[1] + fij[2] * c.del[2];
+  for (int k = 0; k < 3; ++k) out.fs[k] = fij[k] - c.del[k] * fdotd * rsqinv;
+  return out;
+}
+
 /* ---------------------------------------------------------------------- */
 
 // The geometry and relative motion of i's contact with j at distance r.
@@ -300,6 +365,11 @@ spinslide_lammps::ContactState PairGranularSpinslide::contact_state(int i, int j
 const spinslide_lammps::ContactLaw& PairGranularSpinslide::contact_law(int itype, int jtype) const {
   return laws[static_cast<std::size_t>(itype) * static_cast<std::size_t>(atom->ntypes + 1) +
               static_cast<std::size_t>(jtype)];
+}
+
+spinslide_lammps::LegacyLaw& PairGranularSpinslide::legacy_of(int itype, int jtype) {
+  return legacy_laws[static_cast<std::size_t>(itype) * static_cast<std::size_t>(atom->ntypes + 1) +
+                     static_cast<std::size_t>(jtype)];
 }
 
 spinslide_lammps::ContactLaw& PairGranularSpinslide::law_of(int itype, int jtype) {
@@ -367,6 +437,7 @@ void PairGranularSpinslide::allocate() {
   memory->create(cutoff_type, n + 1, n + 1, "pair:cutoff_type");
   laws.assign(static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1),
               spinslide_lammps::ContactLaw{});
+  legacy_laws.assign(laws.size(), spinslide_lammps::LegacyLaw{});
   onerad_dynamic = new double[n + 1];
   onerad_frozen = new double[n + 1];
   maxrad_dynamic = new double[n + 1];
@@ -447,7 +518,22 @@ void PairGranularSpinslide::coeff(int narg, char** arg) {
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
   double cut_one = -1.0;
-  const spinslide_lammps::ContactLaw read = read_law(narg, arg, cut_one);
+  // LAMMPS' older styles (gran/hooke, gran/hooke/history, gran/hertz/history):
+  // in their arithmetic with the coupling off, as their equivalent with
+  // Marshall's twisting spring coupled (legacy_contact.h)
+  spinslide_lammps::LegacyLaw legacy;
+  if (utils::strmatch(arg[2], "^gran/")) {
+    const std::vector<std::string> words(arg + 2, arg + narg);
+    const std::string why = spinslide_lammps::parse_legacy(
+        words,
+        [this](const std::string& w) { return utils::numeric(FLERR, w.c_str(), false, lmp); },
+        force->nktv2p, legacy);
+    if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}", why);
+  }
+  const spinslide_lammps::ContactLaw read = legacy.model != spinslide_lammps::LegacyModel::kNone
+                                                ? spinslide_lammps::modern_equivalent(legacy)
+                                                : read_law(narg, arg, cut_one);
+  if (coupled) legacy.model = spinslide_lammps::LegacyModel::kNone;
   const std::string why = spinslide_lammps::check_law(read);
   if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}", why);
   const spinslide_lammps::ContactLaw law =
@@ -459,6 +545,7 @@ void PairGranularSpinslide::coeff(int narg, char** arg) {
   for (int i = ilo; i <= ihi; i++) {
     for (int j = std::max(jlo, i); j <= jhi; j++) {
       law_of(i, j) = law_of(j, i) = law;
+      legacy_of(i, j) = legacy_of(j, i) = legacy;
       cutoff_type[i][j] = cutoff_type[j][i] = cut_one;
       setflag[i][j] = 1;
       count++;
@@ -542,6 +629,12 @@ double PairGranularSpinslide::init_one(int i, int j) {
   if (setflag[i][j] == 0) {
     // mixed materials: the effective moduli of the two, and the geometric
     // means of the other numbers (granular_model.h, mix)
+    if (legacy_of(i, i).model != spinslide_lammps::LegacyModel::kNone ||
+        legacy_of(j, j).model != spinslide_lammps::LegacyModel::kNone)
+      error->all(FLERR,
+                 "Pair granular/spinslide: types {} and {}: LAMMPS' older styles do not mix; "
+                 "give their pair_coeff",
+                 i, j);
     if (!spinslide_lammps::same_forms(law_of(i, i), law_of(j, j)))
       error->all(FLERR,
                  "Pair granular/spinslide: types {} and {} have different models; give their "

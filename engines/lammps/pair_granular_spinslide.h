@@ -22,6 +22,7 @@
 #ifndef SPINSLIDE_LAMMPS_PAIR_GRANULAR_SPINSLIDE_H
 #define SPINSLIDE_LAMMPS_PAIR_GRANULAR_SPINSLIDE_H
 
+#include "legacy_contact.h"
 #include "pair.h"
 #include "spinslide_contact.h"
 
@@ -65,6 +66,12 @@ class PairGranularSpinslide : public Pair {
                     const spinslide_lammps::ContactForce& cf, bool on_j, double fij[3]);
   const spinslide_lammps::ContactLaw& contact_law(int itype, int jtype) const;
   spinslide_lammps::ContactLaw& law_of(int itype, int jtype);
+  spinslide_lammps::LegacyLaw& legacy_of(int itype, int jtype);
+  bool one_pair(int i, int j, int& touch, double* history, bool advance,
+                spinslide_lammps::ContactForce& cf, double fij[3]);
+  spinslide_lammps::ContactForce legacy_pair(int i, int j,
+                                             const spinslide_lammps::LegacyLaw& legacy,
+                                             double* history, bool advance, double fij[3]);
   double dt = 0.0;
   int coupled = 1;       // 1: the coupled cap (default); 0: independent caps
   int twist_negate = 0;  // 1: the twist spring flips sign when a contact changes owner
@@ -75,6 +82,8 @@ class PairGranularSpinslide : public Pair {
 
   // per type pair (i (ntypes + 1) + j): the contact law, resolved
   std::vector<spinslide_lammps::ContactLaw> laws;
+  // ... and LAMMPS' older style, if the type pair was given one (coupling no)
+  std::vector<spinslide_lammps::LegacyLaw> legacy_laws;
   double** cutoff_type = nullptr;  // the given cutoff (-1: automatic)
 
   double *onerad_dynamic = nullptr, *onerad_frozen = nullptr;

@@ -7,6 +7,7 @@
 // the checks of bad input, the constants, the mixing of two types, and the
 // JKR patch against the JKR relations it solves.
 #include "granular_model.h"
+#include "legacy_contact.h"
 
 #include <gtest/gtest.h>
 
@@ -219,6 +220,75 @@ TEST(GranularModel, JkrPatchSolvesTheJkrRelations) {
     EXPECT_TRUE(spinslide_lammps::pair_touching(law, inside * inside, radsum, reff, true));
     EXPECT_FALSE(spinslide_lammps::pair_touching(law, outside * outside, radsum, reff, true));
     EXPECT_FALSE(spinslide_lammps::pair_touching(law, inside * inside, radsum, reff, false));
+  }
+}
+
+// LAMMPS' older styles: their numbers as those styles resolve them.
+TEST(LegacyModel, ReadsTheOlderStylesNumbers) {
+  spinslide_lammps::LegacyLaw law;
+  ASSERT_EQ(spinslide_lammps::parse_legacy(words("gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0"),
+                                           number, 1.0, law),
+            "");
+  EXPECT_EQ(law.model, spinslide_lammps::LegacyModel::kHookeHistory);
+  EXPECT_EQ(law.kt, 2000.0 * 2.0 / 7.0);  // NULL: 2 kn/7
+  EXPECT_EQ(law.gammat, 0.0);             // dampflag 0
+  ASSERT_EQ(spinslide_lammps::parse_legacy(
+                words("hertz/history 4000 1000 100 NULL 0.5 1 limit_damping"), number, 2.0, law),
+            "");
+  EXPECT_EQ(law.model, spinslide_lammps::LegacyModel::kHertzHistory);
+  EXPECT_EQ(law.kn, 2000.0);  // divided by nktv2p
+  EXPECT_EQ(law.kt, 500.0);
+  EXPECT_EQ(law.gammat, 50.0);  // NULL: gamman/2
+  EXPECT_TRUE(law.limit_damping);
+  const spinslide_lammps::LegacyLaw hertz = law;
+  EXPECT_NE(spinslide_lammps::parse_legacy(words("gran/hooke 1 1 1 1 0.5"), number, 1.0, law), "");
+  EXPECT_NE(spinslide_lammps::parse_legacy(words("gran/hooke 1 1 1 1 0.5 2"), number, 1.0, law),
+            "");
+  EXPECT_NE(spinslide_lammps::parse_legacy(words("gran/soft 1 1 1 1 0.5 1"), number, 1.0, law), "");
+  // coupled: the same contact in the newer keywords, with Marshall's spring
+  const ContactLaw modern = spinslide_lammps::modern_equivalent(hertz);
+  EXPECT_EQ(modern.normal, NormalModel::kHertz);
+  EXPECT_EQ(modern.damping, DampingModel::kViscoelastic);
+  EXPECT_EQ(modern.tangential, TangentialModel::kMindlin);
+  EXPECT_EQ(modern.xgammat, 0.5);
+  EXPECT_EQ(modern.twist, TwistModel::kMarshall);
+  EXPECT_EQ(spinslide_lammps::check_law(modern), "");
+}
+
+// The older styles' forces against the contact laws they implement: a
+// sphere pair at overlap d approaching at v_n and sliding at v_t.
+TEST(LegacyModel, ForcesAreTheContactLaw) {
+  spinslide_lammps::LegacyLaw law;
+  const double kn = 2000.0, kt = 600.0, gn = 50.0, gt = 20.0, mu = 0.5;
+  for (const char* model : {"gran/hooke/history", "gran/hertz/history"}) {
+    ASSERT_EQ(spinslide_lammps::parse_legacy(
+                  words(std::string(model) + " 2000 600 50 20 0.5 1"), number, 1.0, law),
+              "");
+    const bool hertz = std::string(model) == "gran/hertz/history";
+    spinslide_lammps::LegacyContact c{};
+    const double d = 0.01, r = 2.0 - d, reff = 0.5, meff = 0.25, vn = -0.1, vt = 0.02;
+    c.del[0] = r;  // along x; the partner approaches along -x relative
+    c.rsq = r * r;
+    c.radsum = 2.0;
+    c.polyhertz = std::sqrt(d * reff);
+    c.vr[0] = vn;
+    c.vr[1] = vt;
+    c.meff = meff;
+    double shear[3] = {0.0, 0.0, 0.0}, f[3], tor[3];
+    const double dt = 1e-4;
+    const bool capped = spinslide_lammps::legacy_force(law, c, shear, dt, true, false, f, tor);
+    const double scale = hertz ? std::sqrt(d * reff) : 1.0;
+    EXPECT_NEAR(f[0], scale * (kn * d - meff * gn * vn), 1e-12) << model;
+    EXPECT_NEAR(f[1], -scale * (kt * vt * dt + meff * gt * vt), 1e-12) << model;
+    EXPECT_NEAR(shear[1], vt * dt, 1e-18) << model;
+    EXPECT_FALSE(capped) << model;
+    // torque: r_i (n x F_t) taken off; here n = x, F_t along y
+    EXPECT_NEAR(tor[2], f[1], 1e-12) << model;
+    // a fast slip is capped at mu |F_n|
+    c.vr[1] = 100.0;
+    double shear2[3] = {0.0, 0.0, 0.0};
+    EXPECT_TRUE(spinslide_lammps::legacy_force(law, c, shear2, dt, true, false, f, tor)) << model;
+    EXPECT_NEAR(std::fabs(f[1]), mu * std::fabs(f[0]), 1e-12 * std::fabs(f[0])) << model;
   }
 }
 

@@ -20,15 +20,21 @@
 #     granular ...` -> the plugin's wall/gran/spinslide and
 #     wall/gran/region/spinslide with the same keywords; uncoupled adds
 #     `coupling no moduli legacy` (LAMMPS 2021's wall constants of the
-#     material models);
+#     material models) and, for region walls, `slots legacy` (LAMMPS 2021's
+#     mismatch of a corner contact's history, docs/lammps.md);
 #   - `run N` -> `run ${runK}`;
 #   - before the first run: a dump of every atom (id type x v f torque omega)
 #     at full precision every ${dumpevery} steps (default 500), sorted by
 #     id, into ${out}.dump, for compare_dumps.
-# Anything else is kept as it is.  LAMMPS' older styles (pair_style
-# gran/hooke, gran/hooke/history, gran/hertz/history and their walls) are
-# not converted: the plugin does not reproduce them yet, and the conversion
-# stops with a message saying so.
+#   - LAMMPS' older styles: `pair_style [hybrid] gran/hooke|gran/hooke/history|
+#     gran/hertz/history ARGS` -> `pair_style granular/spinslide [coupling no]`,
+#     and the `pair_coeff` after it -> `pair_coeff * * gran/... ARGS` (the
+#     plugin reads the older style's numbers there); `fix ... wall/gran
+#     hooke|hooke/history|hertz/history ...` (and wall/gran/region) -> the
+#     plugin's walls with the same words, `coupling no` added for uncoupled.
+#     Uncoupled, the plugin computes them in their own arithmetic; coupled,
+#     as their equivalent with Marshall's twisting spring added.
+# Anything else is kept as it is.
 foreach(var IN ITEMS IN OUT)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "convert_example.cmake: pass -D${var}=...")
@@ -50,23 +56,37 @@ plugin          load \${plugin}
 ")
 set(body "")
 set(nrun 0)
+set(legacy "")
 foreach(line IN LISTS lines)
   string(REGEX REPLACE "[ \t]+$" "" command "${line}")
   if(command MATCHES "^pair_style[ \t]+granular$")
     string(APPEND body "if \"\${model} == stock\" then \"${command}\" &
 elif \"\${model} == uncoupled\" \"pair_style granular/spinslide coupling no twist_transfer negate\" &
 else \"pair_style granular/spinslide\"\n")
-  elseif(command MATCHES "^pair_style[ \t]+(gran/[a-z/]+|hybrid)")
-    message(FATAL_ERROR "convert_example.cmake: ${name}: `${command}`: LAMMPS' older granular styles are not reproduced by the plugin yet")
-  elseif(command MATCHES "^fix[ \t]+([^ \t]+)[ \t]+([^ \t]+)[ \t]+(wall/gran|wall/gran/region)[ \t]+granular[ \t]+(.*)$")
-    set(head_words "fix ${CMAKE_MATCH_1} ${CMAKE_MATCH_2}")
-    set(wall "${CMAKE_MATCH_3}/spinslide granular")
-    set(rest "${CMAKE_MATCH_4}")
+  elseif(command MATCHES "^pair_style[ \t]+(hybrid[ \t]+)?(gran/[a-z/]+[ \t].*)$")
+    # LAMMPS' older styles: their numbers go into the plugin's pair_coeff
+    string(REGEX REPLACE "[ \t]+" " " legacy "${CMAKE_MATCH_2}")
     string(APPEND body "if \"\${model} == stock\" then \"${command}\" &
-elif \"\${model} == uncoupled\" \"${head_words} ${wall} coupling no moduli legacy ${rest}\" &
-else \"${head_words} ${wall} ${rest}\"\n")
+elif \"\${model} == uncoupled\" \"pair_style granular/spinslide coupling no\" &
+else \"pair_style granular/spinslide\"\n")
+  elseif(command MATCHES "^pair_coeff" AND legacy)
+    string(APPEND body "if \"\${model} == stock\" then \"${command}\" &
+else \"pair_coeff * * ${legacy}\"\n")
+  elseif(command MATCHES "^fix[ \t]+([^ \t]+)[ \t]+([^ \t]+)[ \t]+(wall/gran|wall/gran/region)[ \t]+(granular|hooke|hooke/history|hertz/history)[ \t]+(.*)$")
+    # the walls: the plugin's, with the same words; uncoupled as LAMMPS 2021
+    set(wall "fix ${CMAKE_MATCH_1} ${CMAKE_MATCH_2} ${CMAKE_MATCH_3}/spinslide ${CMAKE_MATCH_4} ${CMAKE_MATCH_5}")
+    set(ab "coupling no")
+    if(CMAKE_MATCH_4 STREQUAL "granular")
+      string(APPEND ab " moduli legacy")
+    endif()
+    if(CMAKE_MATCH_3 STREQUAL "wall/gran/region")
+      string(APPEND ab " slots legacy")
+    endif()
+    string(APPEND body "if \"\${model} == stock\" then \"${command}\" &
+elif \"\${model} == uncoupled\" \"${wall} ${ab}\" &
+else \"${wall}\"\n")
   elseif(command MATCHES "^fix[ \t]+[^ \t]+[ \t]+[^ \t]+[ \t]+wall/gran")
-    message(FATAL_ERROR "convert_example.cmake: ${name}: `${command}`: only `wall/gran granular` and `wall/gran/region granular` walls are converted")
+    message(FATAL_ERROR "convert_example.cmake: ${name}: `${command}`: only walls of style granular, hooke, hooke/history and hertz/history are converted")
   elseif(command MATCHES "^run[ \t]+([0-9]+)(.*)$")
     math(EXPR nrun "${nrun} + 1")
     string(APPEND head "variable        run${nrun} index ${CMAKE_MATCH_1}\n")

@@ -6,7 +6,7 @@
 Three panels, each with the four cases (coupling off and on, rolling
 resistance off and on): the heap's angle of repose, the drum's dynamic
 angle, and the drum's surface speed; each seed a small dot, the mean of the
-five with its standard error as a bar.
+seeds with its standard error as a bar.
 """
 import glob
 import math
@@ -68,8 +68,9 @@ def main():
     panel(axes[1], [[v[0] for v in r] for r in runs], "rotating drum: dynamic angle", "degrees")
     panel(axes[2], [[v[1] for v in r] for r in runs], "rotating drum: surface speed",
           "speed (lj units)")
+    seeds = min(len(v) for v in heap + runs)
     fig.suptitle("LAMMPS, granular/spinslide: coupled sliding-twisting friction against "
-                 "independent caps (5 seeds each; bars: standard error)", fontsize=10)
+                 f"independent caps ({seeds} seeds each; bars: standard error)", fontsize=10)
     fig.tight_layout()
     fig.savefig(figure, dpi=120)
     print(f"plot.py: wrote {figure}")

@@ -1,13 +1,14 @@
 #!/bin/sh
 # What coupling does to granular matter (issue 30; docs/lammps.md, "What
 # coupling does to a heap and a drum"): an experiment run coupled and
-# uncoupled, with rolling resistance off and on, five seeds each (20 runs,
-# two at a time), then its analysis on each set of five.
+# uncoupled, with rolling resistance off and on, fifteen seeds each (60
+# runs, two at a time), then its analysis on each set.
 #
 #   run.sh repose|drum LMP PLUGIN OUTDIR [SEEDS] [LAMMPS ARGUMENTS]
 #
-# SEEDS: the seeds, in one argument (default: five); LAMMPS ARGUMENTS: more
-# -var settings for every run, in one argument (a test shortens the runs so).
+# SEEDS: the seeds, in one argument (default: the fifteen of
+# docs/lammps.md); LAMMPS ARGUMENTS: more -var settings for every run, in
+# one argument (a test shortens the runs so).
 # repose: in.repose (the heap on a plate), analysed by repose.py;
 # drum: in.drum (the rotating drum), analysed by drum.py.  Each run writes
 # OUTDIR/<experiment>_<coupling>_<rolling>_<seed>.{xyz|dump} and its log;
@@ -17,7 +18,7 @@ experiment=$1
 lmp=$2
 plugin=$3
 out=$4
-seeds=${5:-"4767548 1234567 7654321 2468024 1357913"}
+seeds=${5:-"4767548 1234567 7654321 2468024 1357913 1111 2222 3333 4444 5555 6666 7777 8888 9999 1010"}
 extra=${6:-}
 here=$(cd "$(dirname "$0")" && pwd)
 case "$experiment" in
