@@ -261,8 +261,8 @@ TEST(LegacyModel, ForcesAreTheContactLaw) {
   spinslide_lammps::LegacyLaw law;
   const double kn = 2000.0, kt = 600.0, gn = 50.0, gt = 20.0, mu = 0.5;
   for (const char* model : {"gran/hooke/history", "gran/hertz/history"}) {
-    ASSERT_EQ(spinslide_lammps::parse_legacy(
-                  words(std::string(model) + " 2000 600 50 20 0.5 1"), number, 1.0, law),
+    ASSERT_EQ(spinslide_lammps::parse_legacy(words(std::string(model) + " 2000 600 50 20 0.5 1"),
+                                             number, 1.0, law),
               "");
     const bool hertz = std::string(model) == "gran/hertz/history";
     spinslide_lammps::LegacyContact c{};
