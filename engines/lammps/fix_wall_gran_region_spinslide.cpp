@@ -98,40 +98,32 @@ void FixWallGranRegionSpinslide::init() {
 
 /* ---------------------------------------------------------------------- */
 
-void FixWallGranRegionSpinslide::post_force(int /*vflag*/) {
-  double** x = atom->x;
-  const double* radius = atom->radius;
-  const int* mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  // setup() computes forces without advancing the springs
-  const bool advance = update->setupflag == 0;
-  clear_statistics();
-
+void FixWallGranRegionSpinslide::begin_step() {
   // a moving region: its displacement and velocities of this step
-  const bool moving = region->dynamic_check() != 0;
+  moving = region->dynamic_check() != 0;
   if (moving) {
     region->prematch();
     region->set_velocity();
   }
+}
 
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    // A centre outside the region (a sphere pushed through a face) touches
-    // nothing, and its contacts keep their history until it comes back, as
-    // in LAMMPS' fix wall/gran/region (in.pour.drum's spheres thrown up
-    // through the drum's lid do this).
-    if (region->match(x[i][0], x[i][1], x[i][2]) == 0) continue;
-    const int nc = region->surface(x[i][0], x[i][1], x[i][2], radius[i]);
-    if (nc > tmax)
-      error->one(FLERR, "Fix {}: region {} reports {} contacts for one sphere, more than its {}",
-                 style, idregion, nc, tmax);
-    match_contacts(i, nc);
-    for (int ic = 0; ic < nc; ic++) {
-      const Region::Contact& c = region->contact[ic];
-      WallTouch touch{{c.delx, c.dely, c.delz}, c.r * c.r, c.radius, {0.0, 0.0, 0.0}};
-      if (moving) region->velocity_contact(touch.vwall, x[i], ic);
-      apply_contact(i, touch, history_many[i][slot_of_contact[ic]], advance);
-    }
+void FixWallGranRegionSpinslide::touch_atom(int i, bool advance) {
+  double** x = atom->x;
+  // A centre outside the region (a sphere pushed through a face) touches
+  // nothing, and its contacts keep their history until it comes back, as
+  // in LAMMPS' fix wall/gran/region (in.pour.drum's spheres thrown up
+  // through the drum's lid do this).
+  if (region->match(x[i][0], x[i][1], x[i][2]) == 0) return;
+  const int nc = region->surface(x[i][0], x[i][1], x[i][2], atom->radius[i]);
+  if (nc > tmax)
+    error->one(FLERR, "Fix {}: region {} reports {} contacts for one sphere, more than its {}",
+               style, idregion, nc, tmax);
+  match_contacts(i, nc);
+  for (int ic = 0; ic < nc; ic++) {
+    const Region::Contact& c = region->contact[ic];
+    WallTouch touch{{c.delx, c.dely, c.delz}, c.r * c.r, c.radius, {0.0, 0.0, 0.0}};
+    if (moving) region->velocity_contact(touch.vwall, x[i], ic);
+    apply_contact(i, touch, history_many[i][slot_of_contact[ic]], advance);
   }
 }
 

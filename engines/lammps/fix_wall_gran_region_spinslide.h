@@ -31,7 +31,6 @@ class FixWallGranRegionSpinslide : public FixWallGranSpinslide {
   FixWallGranRegionSpinslide(class LAMMPS*, int, char**);
   ~FixWallGranRegionSpinslide() override;
   void init() override;
-  void post_force(int) override;
   double memory_usage() override;
   void write_restart(FILE*) override;
   void restart(char*) override;
@@ -70,6 +69,10 @@ class FixWallGranRegionSpinslide : public FixWallGranSpinslide {
   int** walls = nullptr;             // per atom and contact: the face's index
   double*** history_many = nullptr;  // per atom and contact: kHistSize values
   int* slot_of_contact = nullptr;    // this step, per region contact: its slot
+  bool moving = false;               // this step: the region moves (its velocities set)
+
+  void begin_step() override;
+  void touch_atom(int i, bool advance) override;
 };
 
 }  // namespace LAMMPS_NS

@@ -367,7 +367,7 @@ void FixWallGranSpinslide::apply_legacy_contact(int i, const WallTouch& touch, d
   double** v = atom->v;
   double** omega = atom->omega;
   const double radi = atom->radius[i];
-  spinslide_lammps::LegacyContact c;
+  spinslide_lammps::LegacyContact c{};
   for (int k = 0; k < 3; ++k) {
     c.del[k] = touch.d[k];
     c.vr[k] = v[i][k] - touch.vwall[k];
@@ -376,29 +376,23 @@ void FixWallGranSpinslide::apply_legacy_contact(int i, const WallTouch& touch, d
   c.rsq = touch.rsq;
   c.radsum = radi;
   c.meff = atom->rmass[i];
-  const double r = std::sqrt(touch.rsq);
-  const double rwall = touch.rwall;
-  c.polyhertz = rwall == 0.0 ? std::sqrt((radi - r) * radi)
-                             : std::sqrt((radi - r) * radi * rwall / (rwall + radi));
-  double fij[3], tor[3];
-  const bool capped = spinslide_lammps::legacy_force(
-      legacy, c, h, dt, advance, legacy.model == spinslide_lammps::LegacyModel::kHertzHistory, fij,
-      tor);
-  h[spinslide_lammps::kHistSliding] = capped ? 1.0 : 0.0;
-  for (int k = 0; k < 3; ++k) {
-    atom->f[i][k] += fij[k];
-    atom->torque[i][k] -= radi * tor[k];
+  if (legacy.model == spinslide_lammps::LegacyModel::kHertzHistory) {
+    const double r = std::sqrt(touch.rsq);
+    const double rwall = touch.rwall;
+    c.polyhertz = rwall == 0.0 ? std::sqrt((radi - r) * radi)
+                               : std::sqrt((radi - r) * radi * rwall / (rwall + radi));
   }
-  // the statistics: the friction is the force less its normal part
-  const double fdotd = fij[0] * c.del[0] + fij[1] * c.del[1] + fij[2] * c.del[2];
-  double fs2 = 0.0;
+  const spinslide_lammps::LegacyForce lf = spinslide_lammps::legacy_force(
+      legacy, c, h, dt, advance, legacy.model == spinslide_lammps::LegacyModel::kHertzHistory);
+  h[spinslide_lammps::kHistSliding] = lf.capped ? 1.0 : 0.0;
   for (int k = 0; k < 3; ++k) {
-    const double fs = fij[k] - c.del[k] * fdotd / c.rsq;
-    fs2 += fs * fs;
+    atom->f[i][k] += lf.f[k];
+    atom->torque[i][k] -= radi * lf.tor[k];
   }
   stats_local[kStatContacts] += 1.0;
-  if (capped) stats_local[kStatSliding] += 1.0;
-  stats_local[kStatForce] += std::sqrt(fs2);
+  if (lf.capped) stats_local[kStatSliding] += 1.0;
+  stats_local[kStatForce] +=
+      std::sqrt(lf.fs[0] * lf.fs[0] + lf.fs[1] * lf.fs[1] + lf.fs[2] * lf.fs[2]);
 }
 
 /* ----------------------------------------------------------------------
@@ -409,42 +403,44 @@ void FixWallGranSpinslide::apply_legacy_contact(int i, const WallTouch& touch, d
 ------------------------------------------------------------------------- */
 
 void FixWallGranSpinslide::post_force(int /*vflag*/) {
-  double** x = atom->x;
-  const double* radius = atom->radius;
-  const int* mask = atom->mask;
-  const int nlocal = atom->nlocal;
   // setup() computes forces without advancing the springs
   const bool advance = update->setupflag == 0;
   clear_statistics();
+  begin_step();
+  const int* mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit) touch_atom(i, advance);
+}
 
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    const double radi = radius[i];
-    double* h = history[i];
-    WallTouch touch{{0.0, 0.0, 0.0}, 0.0, 0.0, {0.0, 0.0, 0.0}};
-    bool near = true;
-    if (wallstyle == WallStyle::kPlane) {
-      const double above_lo = x[i][axis] - lo;
-      const double below_hi = hi - x[i][axis];
-      touch.d[axis] = above_lo < below_hi ? above_lo : -below_hi;
-    } else {
-      const double delxy = std::sqrt(x[i][0] * x[i][0] + x[i][1] * x[i][1]);
-      const double delr = cylradius - delxy;
-      near = delr <= radi;
-      if (near) {
-        touch.d[0] = -delr / delxy * x[i][0];
-        touch.d[1] = -delr / delxy * x[i][1];
-        touch.rwall = delxy < cylradius ? -2 * cylradius : 2 * cylradius;
-      }
+void FixWallGranSpinslide::begin_step() {}
+
+void FixWallGranSpinslide::touch_atom(int i, bool advance) {
+  double** x = atom->x;
+  const double radi = atom->radius[i];
+  double* h = history[i];
+  WallTouch touch{{0.0, 0.0, 0.0}, 0.0, 0.0, {0.0, 0.0, 0.0}};
+  bool near = true;
+  if (wallstyle == WallStyle::kPlane) {
+    const double above_lo = x[i][axis] - lo;
+    const double below_hi = hi - x[i][axis];
+    touch.d[axis] = above_lo < below_hi ? above_lo : -below_hi;
+  } else {
+    const double delxy = std::sqrt(x[i][0] * x[i][0] + x[i][1] * x[i][1]);
+    const double delr = cylradius - delxy;
+    near = delr <= radi;
+    if (near) {
+      touch.d[0] = -delr / delxy * x[i][0];
+      touch.d[1] = -delr / delxy * x[i][1];
+      touch.rwall = delxy < cylradius ? -2 * cylradius : 2 * cylradius;
     }
-    touch.rsq = touch.d[0] * touch.d[0] + touch.d[1] * touch.d[1] + touch.d[2] * touch.d[2];
-    if (!near || touch.rsq > radi * radi) {
-      // apart: forget the contact
-      for (int k = 0; k < kHistSize; k++) h[k] = 0.0;
-      continue;
-    }
-    apply_contact(i, touch, h, advance);
   }
+  touch.rsq = touch.d[0] * touch.d[0] + touch.d[1] * touch.d[1] + touch.d[2] * touch.d[2];
+  if (!near || touch.rsq > radi * radi) {
+    // apart: forget the contact
+    for (int k = 0; k < kHistSize; k++) h[k] = 0.0;
+    return;
+  }
+  apply_contact(i, touch, h, advance);
 }
 
 /* ---------------------------------------------------------------------- */

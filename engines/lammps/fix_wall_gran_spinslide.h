@@ -83,6 +83,12 @@ class FixWallGranSpinslide : public Fix {
   int parse_walls_and_options(const std::vector<std::string>& words);
   void parse_option(const std::string& key, const std::string& value);
   void check_walls();
+  /// What a step does before it looks at the atoms (a moving region: its
+  /// velocities); nothing for the planes and the cylinder.
+  virtual void begin_step();
+  /// Sphere i (of the group) against the wall: its contacts applied, or
+  /// forgotten when apart.
+  virtual void touch_atom(int i, bool advance);
   /// Zeroes the statistics of the step (post_force's start).
   void clear_statistics();
   /// Sphere i's contact `touch` with history h (kHistSize values): the forces

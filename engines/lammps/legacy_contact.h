@@ -109,20 +109,28 @@ struct LegacyContact {
   double del[3];     ///< from the partner (the wall's nearest point) to the sphere's centre
   double rsq;        ///< |del|^2, as the caller computed it
   double radsum;     ///< the contact distance (a wall: the sphere's radius)
-  double polyhertz;  ///< hertz: sqrt(d R*) as the style computes it (set by the caller)
+  double polyhertz;  ///< hertz/history: sqrt(d R*) as the style computes it (set by the caller)
   double vr[3];      ///< the sphere's velocity relative to the partner (the wall's surface)
   double wr[3];      ///< r_i w_i + r_j w_j (a wall: r_i w_i), not yet divided by r
   double meff;       ///< the effective mass
 };
 
-/// The force on the sphere (f) and the vector tor whose r_i multiple is
-/// taken off the sphere's torque (r_j for the partner's), and whether the
-/// friction was capped.  shear: the tangential spring (3 values; unused by
-/// gran/hooke), advanced by dt if `advance`.  `wall_hertz` selects fix
-/// wall/gran hertz/history's v_n (it divides by rsq where the pair
+/// What one contact of an older style gives the sphere.
+struct LegacyForce {
+  double f[3];    ///< the force on the sphere
+  double fs[3];   ///< its friction part
+  double tor[3];  ///< the vector whose r_i multiple is taken off the sphere's torque (r_j: the
+                  ///< partner's)
+  double ccel;    ///< the normal force per unit of del (del ccel is the normal force)
+  bool capped;    ///< the friction at its limit
+};
+
+/// One contact of an older style.  shear: the tangential spring (3 values;
+/// unused by gran/hooke), advanced by dt if `advance`.  `wall_hertz` selects
+/// fix wall/gran hertz/history's v_n (it divides by rsq where the pair
 /// multiplies by 1/rsq).
-inline bool legacy_force(const LegacyLaw& law, const LegacyContact& c, double* shear, double dt,
-                         bool advance, bool wall_hertz, double f[3], double tor[3]) {
+inline LegacyForce legacy_force(const LegacyLaw& law, const LegacyContact& c, double* shear,
+                                double dt, bool advance, bool wall_hertz) {
   const double* d = c.del;
   const double r = std::sqrt(c.rsq);
   const double rinv = 1.0 / r;
@@ -134,22 +142,23 @@ inline bool legacy_force(const LegacyLaw& law, const LegacyContact& c, double* s
   const double wr[3] = {c.wr[0] * rinv, c.wr[1] * rinv, c.wr[2] * rinv};
   const double meff = c.meff;
 
+  LegacyForce out{};
   const double damp = meff * law.gamman * vnnr * rsqinv;
   double ccel = law.kn * (c.radsum - r) * rinv - damp;
   const bool hertz = law.model == LegacyModel::kHertzHistory;
   if (hertz) ccel *= c.polyhertz;
   if (law.limit_damping && (ccel < 0.0)) ccel = 0.0;
+  out.ccel = ccel;
 
   const double vtr[3] = {vt[0] - (d[2] * wr[1] - d[1] * wr[2]),
                          vt[1] - (d[0] * wr[2] - d[2] * wr[0]),
                          vt[2] - (d[1] * wr[0] - d[0] * wr[1])};
-  const double vrel = std::sqrt(vtr[0] * vtr[0] + vtr[1] * vtr[1] + vtr[2] * vtr[2]);
   const double fn = law.xmu * std::fabs(ccel * r);
-  double fs[3];
-  bool capped = false;
+  double* fs = out.fs;
   if (law.model == LegacyModel::kHooke) {
+    const double vrel = std::sqrt(vtr[0] * vtr[0] + vtr[1] * vtr[1] + vtr[2] * vtr[2]);
     const double ft_all = meff * law.gammat * vrel;
-    capped = ft_all > fn;
+    out.capped = ft_all > fn;
     const double ft = vrel != 0.0 ? (fn < ft_all ? fn : ft_all) / vrel : 0.0;
     for (int k = 0; k < 3; ++k) fs[k] = -ft * vtr[k];
   } else {
@@ -160,27 +169,26 @@ inline bool legacy_force(const LegacyLaw& law, const LegacyContact& c, double* s
     const double rsht = (shear[0] * d[0] + shear[1] * d[1] + shear[2] * d[2]) * rsqinv;
     if (advance)
       for (int k = 0; k < 3; ++k) shear[k] -= rsht * d[k];
-    const double scale = hertz ? c.polyhertz : 1.0;
     for (int k = 0; k < 3; ++k) {
       const double spring = law.kt * shear[k] + meff * law.gammat * vtr[k];
-      fs[k] = hertz ? -scale * spring : -spring;
+      fs[k] = hertz ? -c.polyhertz * spring : -spring;
     }
     const double fsmag = std::sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
-    capped = fsmag > fn;
-    if (capped && shrmag != 0.0) {
+    out.capped = fsmag > fn;
+    if (out.capped && shrmag != 0.0) {
       for (int k = 0; k < 3; ++k)
         shear[k] = (fn / fsmag) * (shear[k] + meff * law.gammat * vtr[k] / law.kt) -
                    meff * law.gammat * vtr[k] / law.kt;
       for (int k = 0; k < 3; ++k) fs[k] *= fn / fsmag;
-    } else if (capped) {
+    } else if (out.capped) {
       fs[0] = fs[1] = fs[2] = 0.0;
     }
   }
-  for (int k = 0; k < 3; ++k) f[k] = d[k] * ccel + fs[k];
-  tor[0] = rinv * (d[1] * fs[2] - d[2] * fs[1]);
-  tor[1] = rinv * (d[2] * fs[0] - d[0] * fs[2]);
-  tor[2] = rinv * (d[0] * fs[1] - d[1] * fs[0]);
-  return capped;
+  for (int k = 0; k < 3; ++k) out.f[k] = d[k] * ccel + fs[k];
+  out.tor[0] = rinv * (d[1] * fs[2] - d[2] * fs[1]);
+  out.tor[1] = rinv * (d[2] * fs[0] - d[0] * fs[2]);
+  out.tor[2] = rinv * (d[0] * fs[1] - d[1] * fs[0]);
+  return out;
 }
 
 }  // namespace spinslide_lammps

@@ -290,22 +290,18 @@ void PairGranularSpinslide::apply_forces(int i, int j, const spinslide_lammps::C
 }
 
 /* ----------------------------------------------------------------------
-   i's contact with j in one of LAMMPS' older styles (legacy_contact.h):
-   the forces and torques added to i (and j, with newton on or j owned), as
-   gran/hooke, gran/hooke/history and gran/hertz/history compute them; fij
-   the force on i; the friction in the result, for the statistics
+   i's contact with j in one of LAMMPS' older styles (legacy_contact.h), as
+   gran/hooke, gran/hooke/history and gran/hertz/history compute it, the
+   spring in history advanced if `advance`; nothing applied
 ------------------------------------------------------------------------- */
 
-spinslide_lammps::ContactForce PairGranularSpinslide::legacy_pair(
-    int i, int j, const spinslide_lammps::LegacyLaw& legacy, double* history, bool advance,
-    double fij[3]) {
+spinslide_lammps::LegacyForce PairGranularSpinslide::legacy_contact(
+    int i, int j, const spinslide_lammps::LegacyLaw& legacy, double* history, bool advance) const {
   double** x = atom->x;
   double** v = atom->v;
   double** omega = atom->omega;
-  double** f = atom->f;
-  double** torque = atom->torque;
   const double radi = atom->radius[i], radj = atom->radius[j];
-  spinslide_lammps::LegacyContact c;
+  spinslide_lammps::LegacyContact c{};
   for (int k = 0; k < 3; ++k) {
     c.del[k] = x[i][k] - x[j][k];
     c.vr[k] = v[i][k] - v[j][k];
@@ -314,25 +310,39 @@ spinslide_lammps::ContactForce PairGranularSpinslide::legacy_pair(
   c.rsq = c.del[0] * c.del[0] + c.del[1] * c.del[1] + c.del[2] * c.del[2];
   c.radsum = radi + radj;
   c.meff = effective_mass(atom->rmass, atom->mask, freeze_group_bit, i, j);
-  c.polyhertz = std::sqrt((c.radsum - std::sqrt(c.rsq)) * radi * radj / c.radsum);
-  double tor[3];
-  spinslide_lammps::ContactForce out{};
-  out.capped = spinslide_lammps::legacy_force(legacy, c, history, dt, advance, false, fij, tor);
-  history[kHistSliding] = out.capped ? 1.0 : 0.0;
+  if (legacy.model == spinslide_lammps::LegacyModel::kHertzHistory)
+    c.polyhertz = std::sqrt((c.radsum - std::sqrt(c.rsq)) * radi * radj / c.radsum);
+  return spinslide_lammps::legacy_force(legacy, c, history, dt, advance, false);
+}
+
+/* ----------------------------------------------------------------------
+   the same contact's forces and torques added to i (and j, with newton on
+   or j owned); fij the force on i; the friction in the result, for the
+   statistics
+------------------------------------------------------------------------- */
+
+spinslide_lammps::ContactForce PairGranularSpinslide::legacy_pair(
+    int i, int j, const spinslide_lammps::LegacyLaw& legacy, double* history, bool advance,
+    double fij[3]) {
+  double** f = atom->f;
+  double** torque = atom->torque;
+  const spinslide_lammps::LegacyForce lf = legacy_contact(i, j, legacy, history, advance);
+  history[kHistSliding] = lf.capped ? 1.0 : 0.0;
+  const double radi = atom->radius[i], radj = atom->radius[j];
   for (int k = 0; k < 3; ++k) {
-    f[i][k] += fij[k];
-    torque[i][k] -= radi * tor[k];
+    fij[k] = lf.f[k];
+    f[i][k] += lf.f[k];
+    torque[i][k] -= radi * lf.tor[k];
   }
   if (force->newton_pair || j < atom->nlocal) {
     for (int k = 0; k < 3; ++k) {
-      f[j][k] -= fij[k];
-      torque[j][k] -= radj * tor[k];
+      f[j][k] -= lf.f[k];
+      torque[j][k] -= radj * lf.tor[k];
     }
   }
-  // the friction, for the statistics: the force less its normal part
-  const double rsqinv = 1.0 / c.rsq;
-  const double fdotd = fij[0] * c.del[0] + fij[1] * c.del[1] + fij[2] * c.del[2];
-  for (int k = 0; k < 3; ++k) out.fs[k] = fij[k] - c.del[k] * fdotd * rsqinv;
+  spinslide_lammps::ContactForce out{};
+  for (int k = 0; k < 3; ++k) out.fs[k] = lf.fs[k];
+  out.capped = lf.capped;
   return out;
 }
 

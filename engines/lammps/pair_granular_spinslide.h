@@ -69,6 +69,9 @@ class PairGranularSpinslide : public Pair {
   spinslide_lammps::LegacyLaw& legacy_of(int itype, int jtype);
   bool one_pair(int i, int j, int& touch, double* history, bool advance,
                 spinslide_lammps::ContactForce& cf, double fij[3]);
+  spinslide_lammps::LegacyForce legacy_contact(int i, int j,
+                                               const spinslide_lammps::LegacyLaw& legacy,
+                                               double* history, bool advance) const;
   spinslide_lammps::ContactForce legacy_pair(int i, int j,
                                              const spinslide_lammps::LegacyLaw& legacy,
                                              double* history, bool advance, double fij[3]);

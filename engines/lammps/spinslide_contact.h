@@ -294,16 +294,15 @@ inline bool friction_coupled(double* h, const double* vtr, double twist_rate, co
 }
 
 // Viscous friction without a spring (tangential linear_nohistory): the
-// damping force along the slip, capped at fscrit.
-inline void friction_viscous(const double* vtr, double damp_t, double fscrit, double* fs,
-                             bool& capped) {
+// damping force along the slip, capped at fscrit.  True if capped.
+inline bool friction_viscous(const double* vtr, double damp_t, double fscrit, double* fs) {
   const double vrel = std::sqrt(vtr[0] * vtr[0] + vtr[1] * vtr[1] + vtr[2] * vtr[2]);
   const double f = damp_t * vrel;
-  capped = f > fscrit;
   const double ft = vrel != 0.0 ? std::fmin(fscrit, f) / vrel : 0.0;
   fs[0] = -ft * vtr[0];
   fs[1] = -ft * vtr[1];
   fs[2] = -ft * vtr[2];
+  return f > fscrit;
 }
 
 // The rolling resistance (sds): its spring (history kHistRoll) advanced
@@ -363,12 +362,7 @@ inline void contact_force(const ContactLaw& law, const ContactState& s, double* 
   }
   if (advance && law.twist != TwistModel::kNone) history[kHistTwist] += s.twist_rate * dt;
 
-  if (!law.tangential_spring()) {
-    detail::friction_viscous(vtr, k.damp_t, fscrit, out.fs, out.capped);
-    if (law.twist != TwistModel::kNone)
-      out.capped =
-          detail::cap_twist(history, s.twist_rate, k.k_tw, k.damp_tw, mtcrit, out.mt) || out.capped;
-  } else if (coupled && law.couplable()) {
+  if (coupled && law.couplable()) {
     try {
       out.capped =
           detail::friction_coupled(history, vtr, s.twist_rate, k, fscrit, a, out.fs, out.mt);
@@ -378,7 +372,10 @@ inline void contact_force(const ContactLaw& law, const ContactState& s, double* 
       error->one(FLERR, "{}: a contact's friction input is not finite: {}", style, e.what());
     }
   } else {
-    out.capped = detail::cap_spring(history + kHistShear, vtr, k.kt, k.damp_t, fscrit, out.fs);
+    // the independent caps: the tangential friction, then the twisting torque
+    out.capped = law.tangential_spring()
+                     ? detail::cap_spring(history + kHistShear, vtr, k.kt, k.damp_t, fscrit, out.fs)
+                     : detail::friction_viscous(vtr, k.damp_t, fscrit, out.fs);
     if (law.twist != TwistModel::kNone)
       out.capped =
           detail::cap_twist(history, s.twist_rate, k.k_tw, k.damp_tw, mtcrit, out.mt) || out.capped;
