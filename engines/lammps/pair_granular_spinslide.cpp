@@ -402,8 +402,6 @@ double PairGranularSpinslide::single(int i, int j, int itype, int jtype, double 
                                      double /*factor_coul*/, double /*factor_lj*/, double& fforce) {
   for (int m = 0; m < single_extra; m++) svector[m] = 0.0;
   fforce = 0.0;
-  const double radsum = atom->radius[i] + atom->radius[j];
-  if (rsq >= radsum * radsum) return 0.0;
   if (fix_history == nullptr || fix_history->firstvalue == nullptr || list == nullptr)
     error->one(FLERR, "Pair granular/spinslide: single() needs the history of a run");
   // i's neighbor list holds the pair and its history (compute pair/local
@@ -413,16 +411,34 @@ double PairGranularSpinslide::single(int i, int j, int itype, int jtype, double 
   int jj = 0;
   while (jj < jnum && (jlist[jj] & NEIGHMASK) != j) ++jj;
   if (jj == jnum) return 0.0;
+  // in contact as compute() decides (JKR: until the pull-off distance)
+  const spinslide_lammps::ContactLaw& law = contact_law(itype, jtype);
+  const spinslide_lammps::LegacyLaw& legacy = legacy_of(itype, jtype);
+  const bool is_legacy = legacy.model != spinslide_lammps::LegacyModel::kNone;
+  const double radi = atom->radius[i], radj = atom->radius[j];
+  const double radsum = radi + radj;
+  const bool touching =
+      is_legacy ? rsq < radsum * radsum
+                : spinslide_lammps::pair_touching(law, rsq, radsum, radi * radj / radsum,
+                                                  fix_history->firstflag[i][jj] != 0);
+  if (!touching) return 0.0;
   double history[kHistSize];
   const double* stored = &fix_history->firstvalue[i][static_cast<std::ptrdiff_t>(kHistSize) * jj];
   std::copy(stored, stored + kHistSize, history);
 
   const double r = std::sqrt(rsq);
   const spinslide_lammps::ContactState state = contact_state(i, j, r);
-  spinslide_lammps::ContactForce cf;
-  spinslide_lammps::contact_force(contact_law(itype, jtype), state, history, dt, false,
-                                  coupled != 0, error, "pair granular/spinslide", cf);
-  fforce = cf.fn / r;
+  spinslide_lammps::ContactForce cf{};
+  if (is_legacy) {
+    // LAMMPS' older styles, in their arithmetic (the spring not advanced)
+    const spinslide_lammps::LegacyForce lf = legacy_contact(i, j, legacy, history, false);
+    fforce = lf.ccel;
+    for (int k = 0; k < 3; ++k) cf.fs[k] = lf.fs[k];
+  } else {
+    spinslide_lammps::contact_force(law, state, history, dt, false, coupled != 0, error,
+                                    "pair granular/spinslide", cf);
+    fforce = cf.fn / r;
+  }
   for (int k = 0; k < 3; ++k) svector[k] = cf.fs[k];
   svector[3] = std::sqrt(cf.fs[0] * cf.fs[0] + cf.fs[1] * cf.fs[1] + cf.fs[2] * cf.fs[2]);
   svector[4] = cf.mt;
