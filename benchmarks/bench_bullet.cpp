@@ -3,7 +3,7 @@
 //
 // The cost of spinslide's friction inside Bullet (docs/engines.md,
 // docs/performance.md): one time step (Δt = 1e-5 s) of 64 coins of
-// examples/bullet_coin (R = 12 mm, 2 mm thick, 7.1 g, μ = 0.3) on a static
+// engines/bullet/examples/bullet_coin (R = 12 mm, 2 mm thick, 7.1 g, μ = 0.3) on a static
 // box table, each one contact with the table, sliding and spinning
 // (re-thrown at 0.1 m/s and 10 rad/s every 1000 steps, 0.01 s, before they
 // stop: friction takes 0.03 m/s and 3.3 rad/s in that time) or at rest:
@@ -21,7 +21,7 @@
 #include <spinslide/engines/bullet.hpp>
 #include <spinslide/spinslide.hpp>
 
-#include "../examples/bullet_coin/scene.hpp"
+#include "../engines/bullet/examples/bullet_coin/scene.hpp"
 #include "ratio_reporter.hpp"
 
 #include <cmath>
@@ -37,7 +37,7 @@ constexpr double dt = 1e-5, coin_mass = 0.0071;
 using bullet_scene::coin_half_thickness;
 using bullet_scene::coin_radius;
 
-// The example's scene (examples/bullet_coin/scene.hpp; its table's top face
+// The example's scene (engines/bullet/examples/bullet_coin/scene.hpp; its table's top face
 // centred at (0.7, 0.7, 0)) and 64 coins on an 8 × 8 grid 0.2 m apart,
 // released at rest and settled for 100 steps.
 class scene {

@@ -25,13 +25,13 @@
 //   ./build/release/benchmarks/bench_disk
 #include <benchmark/benchmark.h>
 
-#include <spinslide/contact.hpp>
-#include <spinslide/disk.hpp>
-#include <spinslide/impulse_friction.hpp>
-#include <spinslide/limit_set.hpp>
-#include <spinslide/profile.hpp>
-#include <spinslide/spring_friction.hpp>
-#include <spinslide/tabulated.hpp>
+#include <spinslide/contact/contact_law.hpp>
+#include <spinslide/values/disk.hpp>
+#include <spinslide/contact/impulse_friction.hpp>
+#include <spinslide/contact/limit_set.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/contact/spring_friction.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>

@@ -3,7 +3,7 @@
 //
 // The cost of spinslide's friction inside MuJoCo (docs/engines.md,
 // docs/performance.md): one time step of the paper's disk on a floor
-// (examples/mujoco_disk/scene.hpp; 3 contacts on the rim), sliding and
+// (engines/mujoco/examples/mujoco_disk/scene.hpp; 3 contacts on the rim), sliding and
 // spinning (re-thrown at 0.3 m/s and 5 rad/s every 1000 steps, 0.1 s, before
 // it stops) or at rest:
 //   mujoco_native: MuJoCo's own friction, condim 4 (torsional), elliptic cone
@@ -18,8 +18,8 @@
 #include <spinslide/engines/mujoco.hpp>
 #include <spinslide/spinslide.hpp>
 
-#include "../examples/mujoco_disk/scene.hpp"
-#include "../examples/mujoco_humanoid/humanoid.hpp"
+#include "../engines/mujoco/examples/mujoco_disk/scene.hpp"
+#include "../engines/mujoco/examples/mujoco_humanoid/humanoid.hpp"
 #include "ratio_reporter.hpp"
 
 #include <cmath>
@@ -76,7 +76,7 @@ void spinslide_in_mujoco_at_rest(benchmark::State& s) {
   step_the_disk(s, friction::spinslide, false);
 }
 
-// The humanoid (examples/mujoco_humanoid) standing after 3 s, and walking
+// The humanoid (engines/mujoco/examples/mujoco_humanoid) standing after 3 s, and walking
 // through the first second of a fall (reset every 500 steps): every
 // body/floor pair coupled, against MuJoCo's own friction with condim 3 and 4.
 void step_the_humanoid(benchmark::State& state, const humanoid::friction_model& f, bool falling) {

@@ -116,7 +116,7 @@ BENCHMARK_TEMPLATE(inverse, spinslide::uniform_disk<>, true);
 BENCHMARK_TEMPLATE(inverse, spinslide::hertz<>, true);
 BENCHMARK_TEMPLATE(inverse, spinslide::boussinesq<>, true);
 
-// Hertz's fast path (detail/hertz_fast.hpp) against the closed forms and
+// Hertz's fast path (values/detail/hertz_fast.hpp) against the closed forms and
 // series it replaced for double (still the path of long double and wider
 // types), over 4096 log-uniform ε in [13/10, 1e3], where it applies: 𝓕, 𝓣,
 // 𝓕′ and 𝓕″ together (what the limit-set projection's warm steps take), each

@@ -8,7 +8,7 @@
 // figures/approximations.png into the output directory:
 //   ./build/release/examples/approximations [output-directory]
 // The CMake target `approximations_doc` regenerates docs/approximations.md.
-#include <spinslide/approximations.hpp>
+#include <spinslide/values/approximations.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include "gnuplot.hpp"
@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
       "approximations_doc`); do not edit by hand.\n\n");
   std::fprintf(f,
                "Each model imitates the uniformly pressed disk (⟨r⟩ = 2/3, ⟨1/r⟩ = 2, ⟨r²⟩ = 1/2); "
-               "all are in `include/spinslide/approximations.hpp` and are profiles, so the "
+               "all are in `include/spinslide/values/approximations.hpp` and are profiles, so the "
                "terminal analysis and the dynamics run on them unchanged.\n\n");
   std::fprintf(f, "- **uncoupled caps**: 𝓕 = 1, 𝓣 = ⟨r⟩ whenever moving;\n");
   std::fprintf(f, "- **elliptic limit surface**: 𝓕 = ε/√(ε²+⟨r⟩²), 𝓣 = ⟨r⟩²/√(ε²+⟨r⟩²);\n");

@@ -13,7 +13,7 @@
 
 #include "zoo.hpp"
 
-#include <spinslide/contact.hpp>
+#include <spinslide/contact/contact_law.hpp>
 
 namespace {
 

@@ -13,7 +13,7 @@
 
 #include "zoo.hpp"
 
-#include <spinslide/coupling.hpp>
+#include <spinslide/values/coupling.hpp>
 
 namespace {
 

@@ -9,7 +9,7 @@
 
 #include "fuzz.hpp"
 
-#include <spinslide/disk.hpp>
+#include <spinslide/values/disk.hpp>
 
 #include <vector>
 

@@ -19,9 +19,9 @@
 
 #include "zoo.hpp"
 
-#include <spinslide/impulse_friction.hpp>
-#include <spinslide/limit_set.hpp>
-#include <spinslide/spring_friction.hpp>
+#include <spinslide/contact/impulse_friction.hpp>
+#include <spinslide/contact/limit_set.hpp>
+#include <spinslide/contact/spring_friction.hpp>
 
 #include <array>
 #include <cmath>

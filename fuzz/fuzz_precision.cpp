@@ -19,9 +19,9 @@
 
 #include "fuzz.hpp"
 
-#include <spinslide/limit_set.hpp>
-#include <spinslide/profile.hpp>
-#include <spinslide/trial_cap.hpp>
+#include <spinslide/contact/limit_set.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/contact/trial_cap.hpp>
 
 #include <array>
 #include <cmath>

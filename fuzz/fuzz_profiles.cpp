@@ -17,9 +17,9 @@
 
 #include "zoo.hpp"
 
-#include <spinslide/approximations.hpp>
-#include <spinslide/profile.hpp>
-#include <spinslide/tabulated.hpp>
+#include <spinslide/values/approximations.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 #include <array>
 

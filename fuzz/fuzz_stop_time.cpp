@@ -13,8 +13,8 @@
 
 #include "zoo.hpp"
 
-#include <spinslide/dynamics.hpp>
-#include <spinslide/tabulated_throw.hpp>
+#include <spinslide/motion/dynamics.hpp>
+#include <spinslide/motion/tabulated_throw.hpp>
 
 namespace {
 

@@ -15,7 +15,7 @@
 
 #include "zoo.hpp"
 
-#include <spinslide/terminal.hpp>
+#include <spinslide/motion/terminal.hpp>
 
 #include <algorithm>
 #include <vector>

@@ -13,9 +13,9 @@
 
 #include "fuzz.hpp"
 
-#include <spinslide/approximations.hpp>
-#include <spinslide/profile.hpp>
-#include <spinslide/tabulated.hpp>
+#include <spinslide/values/approximations.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 #include <array>
 #include <string>

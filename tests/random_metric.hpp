@@ -9,7 +9,7 @@
 #ifndef SPINSLIDE_TESTS_RANDOM_METRIC_HPP
 #define SPINSLIDE_TESTS_RANDOM_METRIC_HPP
 
-#include <spinslide/planar_metric.hpp>
+#include <spinslide/contact/planar_metric.hpp>
 
 #include <cmath>
 #include <cstddef>

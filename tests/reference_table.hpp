@@ -8,7 +8,7 @@
 #ifndef SPINSLIDE_TESTS_REFERENCE_TABLE_HPP
 #define SPINSLIDE_TESTS_REFERENCE_TABLE_HPP
 
-#include <spinslide/disk.hpp>
+#include <spinslide/values/disk.hpp>
 
 #include <boost/math/special_functions/relative_difference.hpp>
 

@@ -5,7 +5,7 @@
 // what they imply for the end of a throw.
 #include <gtest/gtest.h>
 
-#include <spinslide/approximations.hpp>
+#include <spinslide/values/approximations.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>

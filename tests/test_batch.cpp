@@ -5,7 +5,7 @@
 // Built twice by CMake: as C++17 and as C++20 (test_batch_cxx20).
 #include <gtest/gtest.h>
 
-#include <spinslide/disk.hpp>
+#include <spinslide/values/disk.hpp>
 
 #include <cmath>
 #include <limits>

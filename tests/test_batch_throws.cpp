@@ -7,8 +7,8 @@
 // size, and fail as the serial loop fails.
 #include <gtest/gtest.h>
 
-#include <spinslide/batch_throws.hpp>
-#include <spinslide/profile.hpp>
+#include <spinslide/motion/batch_throws.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 //  Copyright (c) 2026 the spinslide developers.
 //  Distributed under the Boost Software License, Version 1.0.
 //
-// The input checks (detail/checks.hpp): every entry point names itself and
+// The input checks (base/detail/checks.hpp): every entry point names itself and
 // the bad argument in its message; every constructor throws std::domain_error
 // with every policy (it has no NaN to return in place of an object); every
 // function reports through its policy (NaN with errno_on_error and

@@ -2,14 +2,14 @@
 //  Distributed under the Boost Software License, Version 1.0.
 //
 // The fast path of force, torque and force_torque for double and float
-// (detail/disk_fast.hpp, tables from tools/generate_disk_tables.cpp), densely,
+// (values/detail/disk_fast.hpp, tables from tools/generate_disk_tables.cpp), densely,
 // against the long double evaluation of the Carlson forms and series (an
 // independent algorithm, itself checked against the quadrature table in
 // test_disk_reference.cpp; its error, ≤ 8 long double eps, is 1/256 of a
 // double ulp).  Goals (issue 6): ≤ 4 ulp for double, ≤ 2 ulp for float.
 #include <gtest/gtest.h>
 
-#include <spinslide/disk.hpp>
+#include <spinslide/values/disk.hpp>
 
 #include <algorithm>
 #include <cmath>

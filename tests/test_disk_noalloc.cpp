@@ -7,9 +7,9 @@
 // 1/2 and of 1, the large-ε series) in float, double and long double.
 #include <gtest/gtest.h>
 
-#include <spinslide/disk.hpp>
-#include <spinslide/profile.hpp>
-#include <spinslide/tabulated.hpp>
+#include <spinslide/values/disk.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 #include <atomic>
 #include <cstdlib>

@@ -2,7 +2,7 @@
 //  Distributed under the Boost Software License, Version 1.0.
 //
 // The closed forms of the Hertz and Boussinesq profiles (profile.hpp,
-// detail/elastic_closed_forms.hpp; docs/theory.md §6) against
+// values/detail/elastic_closed_forms.hpp; docs/theory.md §6) against
 //  - tests/reference/elastic_reference.csv: ring-kernel quadrature in
 //    cpp_bin_float_50 (generate_elastic_reference.cpp), 229 ratios per
 //    profile including both sides of every branch point, with 𝓕′ by

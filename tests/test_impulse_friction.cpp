@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include <spinslide/impulse_friction.hpp>
+#include <spinslide/contact/impulse_friction.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include <algorithm>

@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include <spinslide/engines/joint_pairs.hpp>
-#include <spinslide/impulse_friction.hpp>
+#include <spinslide/contact/joint_pairs.hpp>
+#include <spinslide/contact/impulse_friction.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include <array>
@@ -28,8 +28,6 @@
 namespace {
 
 using namespace spinslide;
-using engines::joint_pair;
-using engines::pair_coupling;
 using spinslide::pair_friction;
 using matrix = detail::matrix3<double>;
 using vec3 = std::array<double, 3>;
@@ -54,7 +52,7 @@ TEST(JointPairs, TwoPairsAtOnePointAreOnePairWithBothLoads) {
     std::vector<joint_pair> pairs{{std::ref(first), s, normal_impulse<double>{l1}, 0},
                                   {std::ref(second), s, normal_impulse<double>{l2}, 0}};
     // Gauss–Seidel's slowest case: two pairs rigidly coupled (docs/engines.md).
-    const auto outcome = engines::solve_jointly(pairs, w, {1e-10, 5000});
+    const auto outcome = solve_jointly(pairs, w, {1e-10, 5000});
     converged += outcome.converged;
     const auto one = impulse_friction(
         uniform_disk<>(), std::array<double, 2>{s[0], s[1]}, s[2], planar_metric<double>(a),
@@ -86,7 +84,7 @@ TEST(JointPairs, PairsThatShareNoBodyAreEachTheirOwnLaw) {
   const vec3 s{0.4, -0.2, 3}, t{-0.1, 0.5, -2};
   std::vector<joint_pair> pairs{{std::ref(first), s, normal_impulse<double>{0.3}, 0},
                                 {std::ref(second), t, normal_impulse<double>{0.2}, 0}};
-  const auto outcome = engines::solve_jointly(pairs, w);
+  const auto outcome = solve_jointly(pairs, w);
   EXPECT_TRUE(outcome.converged);
   EXPECT_LE(outcome.sweeps, 2);
   const auto p = impulse_friction(
@@ -154,7 +152,7 @@ TEST(JointPairs, NoFeasibleNeighbourLeavesLessEnergy) {
       s.push_back({u(rng), u(rng), u(rng)});
       pairs.push_back({std::ref(settings[p]), s.back(), normal_impulse<double>{0.5}, 0});
     }
-    const auto outcome = engines::solve_jointly(pairs, w, {1e-12, 2000});
+    const auto outcome = solve_jointly(pairs, w, {1e-12, 2000});
     EXPECT_TRUE(outcome.converged) << n << ": " << outcome.sweeps;
     std::vector<vec3> best;
     best.reserve(pairs.size());
@@ -200,12 +198,12 @@ TEST(JointPairs, AnyStartEndsAtTheSameMotion) {
     for (std::size_t p = 0; p < 3; ++p)
       cold.push_back(
           {std::ref(settings[p]), vec3{u(rng), u(rng), u(rng)}, normal_impulse<double>{0.5}, 0});
-    ASSERT_TRUE(engines::solve_jointly(cold, w, {1e-12, 2000}).converged) << n;
+    ASSERT_TRUE(solve_jointly(cold, w, {1e-12, 2000}).converged) << n;
     const std::vector<vec3> expected = slips_after(w, cold);
     std::vector<joint_pair> again = cold, anywhere = cold;
     for (auto& p : anywhere) p.impulse = {u(rng), u(rng), u(rng)};
-    const auto from_answer = engines::solve_jointly(again, w, {1e-12, 2000});
-    const auto from_anywhere = engines::solve_jointly(anywhere, w, {1e-12, 2000});
+    const auto from_answer = solve_jointly(again, w, {1e-12, 2000});
+    const auto from_anywhere = solve_jointly(anywhere, w, {1e-12, 2000});
     EXPECT_LE(from_answer.sweeps, 2) << n;
     ASSERT_TRUE(from_anywhere.converged) << n;
     for (const auto* solved : {&again, &anywhere}) {
@@ -229,7 +227,7 @@ TEST(JointPairs, OnePairIsItsLawWhateverTheStart) {
   const vec3 s{0.3, -0.1, 2};
   std::vector<joint_pair> pairs{
       {std::ref(only), s, normal_impulse<double>{0.2}, 0, vec3{u(rng), u(rng), u(rng)}}};
-  const auto outcome = engines::solve_jointly(pairs, w);
+  const auto outcome = solve_jointly(pairs, w);
   EXPECT_EQ(outcome.sweeps, 1);
   const auto p = impulse_friction(
       uniform_disk<>(), std::array<double, 2>{s[0], s[1]}, s[2], planar_metric<double>(a),
@@ -243,7 +241,7 @@ TEST(JointPairs, OnePairIsItsLawWhateverTheStart) {
 TEST(JointPairs, CouplingOfAnotherSizeIsRefused) {
   pair_friction first = disk_pair(0.1, 0.4);
   std::vector<joint_pair> pairs{{std::ref(first), vec3{1, 0, 0}, normal_impulse<double>{1}, 0}};
-  EXPECT_THROW(engines::solve_jointly(pairs, pair_coupling(2)), std::invalid_argument);
+  EXPECT_THROW(solve_jointly(pairs, pair_coupling(2)), std::invalid_argument);
   const pair_coupling w(2);
   try {
     w.at(2, 0);
@@ -260,7 +258,7 @@ TEST(JointPairs, SingularBlockIsConditioned) {
   pair_coupling w(1);
   w.at(0, 0) = matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 0}}};
   std::vector<joint_pair> pairs{{std::ref(only), vec3{0.5, 0, 1}, normal_impulse<double>{1}, 0}};
-  const auto outcome = engines::solve_jointly(pairs, w);
+  const auto outcome = solve_jointly(pairs, w);
   EXPECT_TRUE(outcome.converged);
   EXPECT_TRUE(std::isfinite(pairs[0].impulse[0] + pairs[0].impulse[1] + pairs[0].impulse[2]));
   EXPECT_LE(std::hypot(pairs[0].impulse[0], pairs[0].impulse[1]), 0.4 * (1 + 1e-12));

@@ -11,7 +11,7 @@
 //    (a clamp), the boundary and the inside.
 #include <gtest/gtest.h>
 
-#include <spinslide/limit_set.hpp>
+#include <spinslide/contact/limit_set.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include <boost/math/policies/policy.hpp>

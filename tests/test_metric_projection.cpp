@@ -3,7 +3,7 @@
 //  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
 //
 // The projection onto the 3-D limit set in a general metric (limit_set.hpp,
-// detail/metric_projector.hpp), against independent computations: the 2-D
+// contact/detail/metric_projector.hpp), against independent computations: the 2-D
 // projection of magnitudes where the metric is isotropic in the force, a
 // brute-force search over the limit surface, and the optimality conditions
 // of a convex problem (on the curve, and the metric's displacement along the
@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include <spinslide/limit_set.hpp>
+#include <spinslide/contact/limit_set.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include <array>
@@ -282,7 +282,7 @@ TEST(MetricProjection, EndsOfTheCurve) {
 // minute): with this metric Newton's method stalled with ∇Ψ ≈ 1e-7, its line
 // search on Ψ's values below their rounding, and raised evaluation_error
 // ("did not converge") from inside a step.  The line search now goes by the
-// sign of Ψ's slope (detail/metric_projector.hpp); the other types:
+// sign of Ψ's slope (contact/detail/metric_projector.hpp); the other types:
 // test_projection_precision.cpp.
 TEST(MetricProjection, RegressionStallWithANearlySingularMetric) {
   const planar_metric<double> metric(matrix{

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include <spinslide/pair_friction.hpp>
+#include <spinslide/contact/pair_friction.hpp>
 
 #include <cmath>
 #include <limits>

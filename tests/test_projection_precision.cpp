@@ -18,7 +18,7 @@
 
 #include <gtest/gtest.h>
 
-#include <spinslide/limit_set.hpp>
+#include <spinslide/contact/limit_set.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>

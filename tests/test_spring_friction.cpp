@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <spinslide/spinslide.hpp>
-#include <spinslide/spring_friction.hpp>
+#include <spinslide/contact/spring_friction.hpp>
 
 #include <array>
 #include <cmath>

@@ -11,7 +11,7 @@
 // start's type (curve_point<double>, or starting_ratio<double> for headers
 // older than issue 26's second session).
 
-#include <spinslide/impulse_friction.hpp>
+#include <spinslide/contact/impulse_friction.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include <array>

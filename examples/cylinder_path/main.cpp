@@ -14,7 +14,7 @@
 // About a minute: a call in partial contact solves the contact and the moment
 // balance together (about 10 ms), so each height's friction is tabulated over ε
 // first.
-#include <spinslide/cylinder.hpp>
+#include <spinslide/values/cylinder.hpp>
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 #include <boost/numeric/odeint.hpp>

@@ -34,8 +34,8 @@
 //
 // stderr shows a progress bar when it is a terminal, and a line every few
 // seconds otherwise.
-#include <spinslide/batch_throws.hpp>
-#include <spinslide/profile.hpp>
+#include <spinslide/motion/batch_throws.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <algorithm>
 #include <chrono>

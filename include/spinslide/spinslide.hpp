@@ -3,34 +3,15 @@
 //  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
 //
 /// \file spinslide.hpp
-/// Umbrella header: includes every public spinslide header.
+/// Umbrella header: includes every public spinslide header of the core, through
+/// the umbrellas of its three parts (values.hpp, motion.hpp, contact.hpp).
+/// The engine adapters are not in it (engines/<engine>/, docs/engines.md).
 
 #ifndef SPINSLIDE_SPINSLIDE_HPP
 #define SPINSLIDE_SPINSLIDE_HPP
 
-#include <spinslide/approximations.hpp>
-#include <spinslide/batch_throws.hpp>
 #include <spinslide/contact.hpp>
-#include <spinslide/contact_inputs.hpp>
-#include <spinslide/coupling.hpp>
-#include <spinslide/cylinder.hpp>
-#include <spinslide/disk.hpp>
-#include <spinslide/dynamics.hpp>
-#include <spinslide/equations_of_motion.hpp>
-#include <spinslide/impulse_friction.hpp>
-#include <spinslide/limit_set.hpp>
-#include <spinslide/pair_friction.hpp>
-#include <spinslide/pair_report.hpp>
-#include <spinslide/planar_metric.hpp>
-#include <spinslide/profile.hpp>
-#include <spinslide/profile_base.hpp>
-#include <spinslide/profile_concept.hpp>
-#include <spinslide/projection_results.hpp>
-#include <spinslide/spring_friction.hpp>
-#include <spinslide/tabulated.hpp>
-#include <spinslide/tabulated_throw.hpp>
-#include <spinslide/terminal.hpp>
-#include <spinslide/throw_inputs.hpp>
-#include <spinslide/trial_cap.hpp>
+#include <spinslide/motion.hpp>
+#include <spinslide/values.hpp>
 
 #endif  // SPINSLIDE_SPINSLIDE_HPP

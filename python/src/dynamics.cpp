@@ -8,9 +8,9 @@
 #include "bindings.hpp"
 #include "profile_handle.hpp"
 
-#include <spinslide/batch_throws.hpp>
-#include <spinslide/dynamics.hpp>
-#include <spinslide/terminal.hpp>
+#include <spinslide/motion/batch_throws.hpp>
+#include <spinslide/motion/dynamics.hpp>
+#include <spinslide/motion/terminal.hpp>
 
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>

@@ -10,7 +10,7 @@
 #include "profile_handle.hpp"
 #include "runtime_profiles.hpp"
 
-#include <spinslide/coupling.hpp>
+#include <spinslide/values/coupling.hpp>
 
 #include <pybind11/stl.h>
 

@@ -7,8 +7,8 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 
-#include <spinslide/disk.hpp>
-#include <spinslide/terminal.hpp>
+#include <spinslide/values/disk.hpp>
+#include <spinslide/motion/terminal.hpp>
 
 namespace spinslide_python {
 

@@ -5,8 +5,8 @@
 // tests/compile_fail/check.cmake once per MISUSE: 0 is the correct call (it
 // must compile, so that the failures below are not an include path), and
 // every other value must fail, with the message the test expects.
-#include <spinslide/batch_throws.hpp>
-#include <spinslide/profile.hpp>
+#include <spinslide/motion/batch_throws.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <list>
 #include <vector>

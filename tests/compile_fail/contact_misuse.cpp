@@ -8,7 +8,7 @@
 // types, and the velocity scale is required.  Compiled by tests/compile_fail/check.cmake once per
 // MISUSE: 0 is the correct call, every other value must fail with the
 // message the test expects.
-#include <spinslide/contact.hpp>
+#include <spinslide/contact/contact_law.hpp>
 
 #include <array>
 

@@ -9,8 +9,8 @@
 // Compiled by tests/compile_fail/check.cmake once per MISUSE: 0 is the
 // correct call, every other value must fail with the message the test
 // expects.
-#include <spinslide/impulse_friction.hpp>
-#include <spinslide/profile.hpp>
+#include <spinslide/contact/impulse_friction.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <array>
 

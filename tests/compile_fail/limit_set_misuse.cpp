@@ -4,11 +4,11 @@
 // Misuse of project_to_limit_set (limit_set.hpp) must not compile.  Compiled
 // by tests/compile_fail/check.cmake once per MISUSE: 0 is the correct call,
 // every other value must fail with the message the test expects.
-#include <spinslide/approximations.hpp>
-#include <spinslide/limit_set.hpp>
-#include <spinslide/planar_metric.hpp>
-#include <spinslide/profile.hpp>
-#include <spinslide/tabulated.hpp>
+#include <spinslide/values/approximations.hpp>
+#include <spinslide/contact/limit_set.hpp>
+#include <spinslide/contact/planar_metric.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 int main() {
   const spinslide::hertz<> profile;

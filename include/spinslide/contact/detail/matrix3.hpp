@@ -1,0 +1,161 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+// 3-vectors and symmetric 3×3 matrices over the tangent plane's (x, y) and the
+// normal spin, for the metric projection and the impulse law: products,
+// Cholesky factorization and solves, lengths.  Small and fixed-size: no
+// allocation.
+#ifndef SPINSLIDE_CONTACT_DETAIL_MATRIX3_HPP
+#define SPINSLIDE_CONTACT_DETAIL_MATRIX3_HPP
+
+#include <boost/math/tools/precision.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace spinslide {
+namespace detail {
+
+template <class Real>
+using vector3 = std::array<Real, 3>;
+template <class Real>
+using matrix3 = std::array<std::array<Real, 3>, 3>;
+
+template <class Real>
+vector3<Real> multiply(const matrix3<Real>& a, const vector3<Real>& x) {
+  vector3<Real> y{};
+  for (std::size_t i = 0; i < 3; ++i) y[i] = a[i][0] * x[0] + a[i][1] * x[1] + a[i][2] * x[2];
+  return y;
+}
+
+template <class Real>
+Real dot(const vector3<Real>& a, const vector3<Real>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// √(x² + y²), by hypot only where the squares could over- or underflow
+// (outside the square roots of the normal numbers, with a margin).
+template <class Real>
+Real length(Real x, Real y) {
+  using std::fabs;
+  using std::hypot;
+  using std::sqrt;
+  static const Real low = 16 * sqrt(boost::math::tools::min_value<Real>());
+  static const Real high = sqrt(boost::math::tools::max_value<Real>()) / 16;
+  const Real big = (std::max)(fabs(x), fabs(y));
+  return big > low && big < high ? Real(sqrt(x * x + y * y)) : Real(hypot(x, y));
+}
+
+// max |vᵢ|.
+template <class Real>
+Real largest(const vector3<Real>& v) {
+  using std::fabs;
+  return (std::max)({Real(fabs(v[0])), Real(fabs(v[1])), Real(fabs(v[2]))});
+}
+
+// s + t·step.
+template <class Real>
+vector3<Real> shifted(const vector3<Real>& s, const vector3<Real>& step, Real t) {
+  return {s[0] + t * step[0], s[1] + t * step[1], s[2] + t * step[2]};
+}
+
+// ‖A‖_F, the Frobenius norm.
+template <class Real>
+Real frobenius(const matrix3<Real>& a) {
+  using std::sqrt;
+  Real s = 0;
+  for (const auto& row : a)
+    for (const Real& x : row) s += x * x;
+  return sqrt(s);
+}
+
+// Whether ‖A‖_F‖A⁻¹‖_F, which bounds A's condition number from above (within
+// a factor 3), is at most 1/√ε_mach (6.7e7 in double).  Beyond, the metric
+// projection's Newton iteration was seen to stall (fuzz_impulse: a metric
+// conditioned near 1e11 and the uniform disk).
+template <class Real>
+bool well_conditioned(const matrix3<Real>& a, const matrix3<Real>& inverse) {
+  using std::sqrt;
+  return frobenius(a) * frobenius(inverse) * sqrt(std::numeric_limits<Real>::epsilon()) <= 1;
+}
+
+// The lower Cholesky factor L (A = L Lᵀ) of the symmetric A (its lower
+// triangle is read); false unless A is positive definite to rounding (every
+// pivot > 0 and finite).
+template <class Real>
+bool cholesky(const matrix3<Real>& a, matrix3<Real>& l) {
+  using std::sqrt;
+  l = matrix3<Real>{};
+  for (std::size_t j = 0; j < 3; ++j) {
+    Real d = a[j][j];
+    for (std::size_t k = 0; k < j; ++k) d -= l[j][k] * l[j][k];
+    if (!(d > 0) || !(d < std::numeric_limits<Real>::infinity())) return false;
+    l[j][j] = sqrt(d);
+    for (std::size_t i = j + 1; i < 3; ++i) {
+      Real s = a[i][j];
+      for (std::size_t k = 0; k < j; ++k) s -= l[i][k] * l[j][k];
+      l[i][j] = s / l[j][j];
+    }
+  }
+  return true;
+}
+
+// x with L Lᵀ x = b.
+template <class Real>
+vector3<Real> cholesky_solve(const matrix3<Real>& l, const vector3<Real>& b) {
+  vector3<Real> y{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    Real s = b[i];
+    for (std::size_t k = 0; k < i; ++k) s -= l[i][k] * y[k];
+    y[i] = s / l[i][i];
+  }
+  vector3<Real> x{};
+  for (std::size_t n = 3; n-- > 0;) {
+    Real s = y[n];
+    for (std::size_t k = n + 1; k < 3; ++k) s -= l[k][n] * x[k];
+    x[n] = s / l[n][n];
+  }
+  return x;
+}
+
+// x with A x = b for a symmetric A (its upper triangle is read), by the
+// adjugate: fewer dependent divisions than a factorization, for the Newton
+// steps of the metric projection (which need no more than a few digits).
+// False if the determinant is not positive and finite.
+template <class Real>
+bool solve_symmetric(const matrix3<Real>& a, const vector3<Real>& b, vector3<Real>& x) {
+  const Real c00 = a[1][1] * a[2][2] - a[1][2] * a[1][2];
+  const Real c01 = a[0][2] * a[1][2] - a[0][1] * a[2][2];
+  const Real c02 = a[0][1] * a[1][2] - a[0][2] * a[1][1];
+  const Real c11 = a[0][0] * a[2][2] - a[0][2] * a[0][2];
+  const Real c12 = a[0][1] * a[0][2] - a[0][0] * a[1][2];
+  const Real c22 = a[0][0] * a[1][1] - a[0][1] * a[0][1];
+  const Real det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
+  if (!(det > 0) || !(det < std::numeric_limits<Real>::infinity())) return false;
+  const Real r = 1 / det;
+  x = {(c00 * b[0] + c01 * b[1] + c02 * b[2]) * r, (c01 * b[0] + c11 * b[1] + c12 * b[2]) * r,
+       (c02 * b[0] + c12 * b[1] + c22 * b[2]) * r};
+  return true;
+}
+
+// A⁻¹ from its Cholesky factor, column by column.
+template <class Real>
+matrix3<Real> cholesky_inverse(const matrix3<Real>& l) {
+  matrix3<Real> inv{};
+  for (std::size_t j = 0; j < 3; ++j) {
+    vector3<Real> e{};
+    e[j] = 1;
+    const vector3<Real> c = cholesky_solve(l, e);
+    for (std::size_t i = 0; i < 3; ++i) inv[i][j] = c[i];
+  }
+  return inv;
+}
+
+}  // namespace detail
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_CONTACT_DETAIL_MATRIX3_HPP

@@ -1,0 +1,102 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+// Small 3-vector helpers of the contact law (contact.hpp), each without
+// spurious over- or underflow for any finite input: the largest component,
+// the norm, a·n, the tangential part and the direction.
+#ifndef SPINSLIDE_CONTACT_DETAIL_VECTOR_MATH_HPP
+#define SPINSLIDE_CONTACT_DETAIL_VECTOR_MATH_HPP
+
+#include <boost/math/special_functions/fpclassify.hpp>
+#include <boost/math/tools/config.hpp>
+#include <boost/math/tools/precision.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+
+namespace spinslide {
+namespace detail {
+
+// The largest |component|.
+template <class Real>
+Real largest_magnitude(Real x, Real y, Real z) {
+  BOOST_MATH_STD_USING
+  return (std::max)({fabs(x), fabs(y), fabs(z)});
+}
+
+// √(x² + y² + z²) without overflow or underflow for any finite input.
+template <class Real>
+Real vector_norm(Real x, Real y, Real z) {
+  BOOST_MATH_STD_USING
+  const Real s2 = x * x + y * y + z * z;
+  // NaN only from a NaN component (std::max would drop it; found by fuzz_contact).
+  if ((boost::math::isnan)(s2)) return s2;
+  if (s2 > boost::math::tools::min_value<Real>() && s2 < boost::math::tools::max_value<Real>())
+    return sqrt(s2);
+  const Real m = largest_magnitude(x, y, z);
+  if (m == 0 || !(boost::math::isfinite)(m)) return m;
+  const Real a = x / m, b = y / m, c = z / m;
+  return m * sqrt(a * a + b * b + c * c);
+}
+
+// a·n for a unit n, without overflow where the result is finite: if a
+// partial sum overflows, the same in units of a's largest component.
+template <class Real>
+Real vector_dot(const Real (&a)[3], const Real (&n)[3]) {
+  BOOST_MATH_STD_USING
+  const Real d = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
+  if ((boost::math::isfinite)(d) || !(boost::math::isfinite)(a[0]) ||
+      !(boost::math::isfinite)(a[1]) || !(boost::math::isfinite)(a[2]))
+    return d;
+  const Real m = largest_magnitude(a[0], a[1], a[2]);
+  return m * ((a[0] / m) * n[0] + (a[1] / m) * n[1] + (a[2] / m) * n[2]);
+}
+
+// The tangential part v − (v·n)n in place, and its length.  Where v·n
+// overflows for finite v (components near the largest value; found by
+// fuzz_contact), in units of v's largest component: then only a tangential
+// part that itself exceeds the largest value is ∞.
+template <class Real>
+Real tangential_part(Real (&v)[3], const Real (&n)[3]) {
+  BOOST_MATH_STD_USING
+  Real scale = 1;
+  if (!(boost::math::isfinite)(v[0] * n[0] + v[1] * n[1] + v[2] * n[2]) &&
+      (boost::math::isfinite)(v[0]) && (boost::math::isfinite)(v[1]) &&
+      (boost::math::isfinite)(v[2])) {
+    scale = largest_magnitude(v[0], v[1], v[2]);
+    for (Real& vi : v) vi /= scale;
+  }
+  const Real vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+  for (int i = 0; i < 3; ++i) v[i] -= vn * n[i];
+  const Real length = vector_norm(v[0], v[1], v[2]);
+  if (scale == 1) return length;
+  for (Real& vi : v) vi *= scale;
+  return scale * length;
+}
+
+// v/|v| in place (0 for v = 0).  For a |v| near the subnormal range (below
+// min/epsilon), in units of v's largest component, where the quotients of
+// subnormals would make |v/|v|| exceed 1 by a percent (found by fuzz_contact).
+template <class Real>
+void unit_direction(Real (&v)[3], Real speed) {
+  BOOST_MATH_STD_USING
+  if (!(speed > 0)) {
+    v[0] = v[1] = v[2] = 0;
+    return;
+  }
+  if (speed >= boost::math::tools::min_value<Real>() / boost::math::tools::epsilon<Real>()) {
+    for (Real& vi : v) vi /= speed;
+    return;
+  }
+  const Real m = largest_magnitude(v[0], v[1], v[2]);
+  for (Real& vi : v) vi /= m;
+  const Real length = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  for (Real& vi : v) vi /= length;
+}
+
+}  // namespace detail
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_CONTACT_DETAIL_VECTOR_MATH_HPP

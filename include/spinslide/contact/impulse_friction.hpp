@@ -1,0 +1,200 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file impulse_friction.hpp
+/// Velocity-level (impulse) friction for one contact over one time step:
+/// exact stick, and slip on the coupled limit set by maximum dissipation
+/// (docs/contact.md, "The impulse law"; docs/theory.md §11).
+///
+/// Given the contact's relative sliding velocity v and spin ω before
+/// friction, and its effective inverse mass W over (v_x, v_y, ω) (the
+/// velocity change per unit impulse: the Delassus operator restricted to
+/// those directions), the friction impulse P = (P_x, P_y, L) is the one that
+/// leaves the least kinetic energy of the relative motion,
+///   P = argmin ½ (s + WP)ᵀ W⁻¹ (s + WP) over μΛ·{(f, a t) : (f, t) ∈ L₃},
+/// Λ the normal impulse.  If the impulse that stops the contact,
+/// −W⁻¹(v, ω), lies in that set, it is the answer (exact stick: no creep, no
+/// velocity scale).  Otherwise P lies on the set's boundary with the
+/// velocity after it, (v⁺, ω⁺) = (v, ω) + WP, along the outward normal:
+/// P = −μΛ(𝓕(ε) v⁺/|v⁺|, a𝓣(ε) sign ω⁺) with ε = |v⁺|/(a|ω⁺|), the exact
+/// Contensou law at the end of the step (an implicit step, which tends to
+/// the exact motion as the step shrinks; tests/test_impulse_friction.cpp).
+
+#ifndef SPINSLIDE_CONTACT_IMPULSE_FRICTION_HPP
+#define SPINSLIDE_CONTACT_IMPULSE_FRICTION_HPP
+
+#include <spinslide/contact/contact_inputs.hpp>
+#include <spinslide/base/detail/checks.hpp>
+#include <spinslide/contact/detail/impulse_frame.hpp>
+#include <spinslide/contact/detail/impulse_in_frame.hpp>
+#include <spinslide/base/detail/product.hpp>
+#include <spinslide/contact/detail/vector_access.hpp>
+#include <spinslide/contact/limit_set.hpp>
+#include <spinslide/contact/planar_metric.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace spinslide {
+
+/// \deprecated impulse_friction returns a friction_result (projection_results.hpp):
+/// `force` for `linear`, `torque` for `angular`, and curve() to start the
+/// next step from.  This type converts from it, and goes in the next release.
+template <class Vec2, class Real>
+struct [[deprecated(
+    "spinslide: impulse_friction returns friction_result {force, torque, "
+    "sticking, ratio, curve()}")]] friction_impulse {
+  using value_type = Real;  ///< the floating type
+  Vec2 linear;              ///< (P_x, P_y)
+  Real angular;             ///< L
+  bool sticking;            ///< true: the impulse stops the contact exactly
+  Real ratio;               ///< ε after the step (NaN if sticking)
+  /// The old names of a friction_result's values.
+  friction_impulse(const friction_result<Vec2, Real>& r)
+      : linear(r.force), angular(r.torque), sticking(r.sticking), ratio(r.ratio) {}
+};
+
+/// The friction impulse for one contact over one step (see the file's
+/// comment).  `velocity`: the relative sliding velocity before friction (a
+/// 2-component vector class, in the tangent plane's axes); `spin`: the
+/// relative angular velocity about the normal; `inverse_mass`: W over
+/// (v_x, v_y, ω), in the same axes; `contact`: a, Λ and μ.  Components
+/// finite, a ≥ 0, Λ ≥ 0 and μ ≥ 0, all of the profile's value_type;
+/// otherwise a domain error, and so is a patch beyond 1/(16√κ ε_mach) times
+/// W's own length scale √((W_xx + W_yy)/(2W_ωω)) (1e13 times it in double at
+/// κ = 1e3): these are the only errors.  Every smaller patch is valid, down
+/// to a = 0, where the law is point friction (no angular impulse; a patch
+/// growing from nothing tends to it continuously: docs/theory.md §11, "A
+/// patch that starts at zero").  `start`: where the
+/// contact's last step left the limit curve (the last result's curve(), or
+/// `curve_point<Real>{ε}` for a ratio alone; ratio ≥ 0, else a domain error;
+/// `{}`: none); it only speeds the search.  The result's `force` and
+/// `torque` are the impulse (P_x, P_y) and L.  No allocation: two 3×3
+/// factorizations and, when it slips, a few evaluations of the profile.
+template <class Profile, class Vec2>
+friction_result<Vec2, typename Profile::value_type> impulse_friction(
+    const Profile& profile, const Vec2& velocity, typename Profile::value_type spin,
+    const planar_metric<typename Profile::value_type>& inverse_mass,
+    const impulse_contact<typename Profile::value_type>& contact,
+    const curve_point<typename Profile::value_type>& start = {}) {
+  using Real = typename Profile::value_type;
+  detail::require_smooth_curve<Profile, Real>();
+  static_assert(detail::is_vector<Vec2, 2>(),
+                "spinslide::impulse_friction: the velocity must be a 2-component vector class "
+                "(operator[] or members x, y), not a pointer or a C array: copy a raw array "
+                "such as MuJoCo's mjtNum* into a std::array<double, 2>");
+  static const char* function =
+      "spinslide::impulse_friction<%1%>(profile, velocity, %1%, inverse_mass, contact)";
+  using detail::argument_rule;
+  using detail::checked;
+  const typename Profile::policy_type pol;
+  const Real vx = checked(function, "velocity[0]", static_cast<Real>(detail::get<0>(velocity)),
+                          argument_rule::finite, pol);
+  const Real vy = checked(function, "velocity[1]", static_cast<Real>(detail::get<1>(velocity)),
+                          argument_rule::finite, pol);
+  const Real w = checked(function, "spin", spin, argument_rule::finite, pol);
+  const auto patch =
+      detail::checked_patch(function, contact, pol, argument_rule::finite_non_negative);
+  const Real a = patch.radius, n = patch.normal, mu = patch.friction;
+  const Real s0 = checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
+  friction_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
+                                  start};
+  // Every output NaN where a check reported an error through a policy that
+  // does not throw.
+  auto reported = [&out](Real bad) {
+    detail::set<0>(out.force, bad);
+    detail::set<1>(out.force, bad);
+    out.torque = out.ratio = bad;
+    return out;
+  };
+  if (detail::any_reported(vx, vy, w, a, n, mu, s0)) return reported(out.ratio);
+  // The impulse that stops the contact, z = −W⁻¹s, and the set μΛ·S·L₃ with
+  // S = diag(1, 1, a): in the limit set's units ẑ = S⁻¹z/(μΛ), in the metric
+  // SWS (inverse S⁻¹W⁻¹S⁻¹), both positive definite since W is.
+  const detail::vector3<Real> slip{vx, vy, w};
+  detail::vector3<Real> stop = detail::multiply(inverse_mass.inverse(), slip);
+  for (Real& x : stop)
+    x = checked(function, "the stopping impulse -W^-1 (v, spin)", Real(-x), argument_rule::finite,
+                pol);
+  const Real load = checked(function, "contact.normal*contact.friction", Real(mu * n),
+                            argument_rule::finite, pol);
+  // The largest angular impulse, μΛa⟨r⟩, must be a number too (its exact
+  // product only where the plain one overflows: an intermediate may).
+  const Real top = profile.mean_radius();
+  const Real plain = load * (a * top);
+  const Real spin_load =
+      (boost::math::isfinite)(plain)
+          ? plain
+          : checked(function, "contact.normal*contact.friction*contact.radius*<r>",
+                    detail::product(load, a, top), argument_rule::finite, pol);
+  if (detail::any_reported(stop[0], stop[1], stop[2], load, spin_load))
+    return reported(load + stop[0] + stop[1] + stop[2] + spin_load);
+  if (load == 0 || (vx == 0 && vy == 0 && w == 0)) {
+    out.sticking = vx == 0 && vy == 0 && w == 0;
+    if (!out.sticking) out.ratio = detail::slip_ratio(Real(std::hypot(vx, vy)), a, w);
+    return out;
+  }
+  auto stuck = [&out, &stop]() {
+    out.sticking = true;
+    detail::set<0>(out.force, stop[0]);
+    detail::set<1>(out.force, stop[1]);
+    out.torque = stop[2];
+    return out;
+  };
+  // Sticking is decided on z's magnitudes (L₃ = {(|f|, |t|) ∈ L}) where
+  // they lie in L's inner triangle, in the limit set's units (divided by a,
+  // then by the load: μΛa itself may be subnormal), before any evaluation
+  // or metric.
+  using std::fabs;
+  if (a > 0 && detail::in_sticking_triangle(Real(stop[0] / load), Real(stop[1] / load),
+                                            Real(fabs(stop[2]) / a / load), top))
+    return stuck();
+  const detail::impulse_frame<Real> frame =
+      detail::impulse_frame_for(inverse_mass, a, Real(2 / profile.mean_inverse_radius()));
+  if (frame.too_large)
+    return reported(detail::raise_argument_error(
+        function, "contact.radius",
+        "at most 1/(16 sqrt(kappa) epsilon) times the inverse mass's own length scale "
+        "sqrt((W_xx + W_yy)/(2 W_ww)) (kappa its condition number; 1e13 times it in double "
+        "for kappa = 1e3)",
+        a, pol));
+  if (frame.point) return detail::point_limit_result(out, inverse_mass, slip, a, load);
+  // In the frame's units (L = cτ), likewise.
+  const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / frame.c / load};
+  const wrench_projection<Real> r =
+      frame.k == 1  // the profile's own curve: the one step of a coin's or a block's contact
+          ? detail::metric_projector<Profile>(profile, target, frame.metric, frame.inverse)(s0,
+                                                                                            &start)
+          : detail::project_in_frame(profile, frame, target, start, {inverse_mass, slip, load});
+  if (r.sticking) return stuck();
+  out.ratio = r.ratio;
+  out.point = r.curve();
+  detail::set<0>(out.force, Real(load * r.point.force_x));
+  detail::set<1>(out.force, Real(load * r.point.force_y));
+  out.torque = detail::product(load, a, r.point.torque);
+  return out;
+}
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+/// \deprecated As above from `curve_point<Real>{start.value}`; goes in the next release.
+template <class Profile, class Vec2>
+[[deprecated("spinslide: pass curve_point<Real>{ratio}")]] friction_result<
+    Vec2, typename Profile::value_type>
+impulse_friction(const Profile& profile, const Vec2& velocity, typename Profile::value_type spin,
+                 const planar_metric<typename Profile::value_type>& inverse_mass,
+                 const impulse_contact<typename Profile::value_type>& contact,
+                 starting_ratio<typename Profile::value_type> start) {
+  return impulse_friction(profile, velocity, spin, inverse_mass, contact,
+                          curve_point<typename Profile::value_type>(start));
+}
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_CONTACT_IMPULSE_FRICTION_HPP

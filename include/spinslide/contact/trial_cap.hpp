@@ -1,0 +1,246 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file trial_cap.hpp
+/// The trial-state cap of a discrete-element (DEM) contact: its springs'
+/// trial friction, with damping, capped together on the coupled limit set
+/// (docs/contact.md, "The spring-history law"; docs/theory.md §11).
+///
+/// A DEM contact carries a tangential spring ξ and a twisting spring φ,
+/// stretched each step by the step's relative motion; with the damping the
+/// trial friction is F = −k_t ξ + F_d and T = −k_θ φ + T_d.  If (F, T) lies
+/// in μN·L it is kept (stick) and so are the springs.  Otherwise it is
+/// replaced by the nearest point of μN·L in the springs' energy metric
+/// |ΔF|²/k_t + |ΔT|²/k_θ (slip), and the springs are rewritten so that with
+/// the damping they give it: ξ = −(F − F_d)/k_t, φ = −(T − T_d)/k_θ.  The
+/// metric is isotropic in the tangent plane, so the cap keeps the trial
+/// force's direction and the torque's sign: it projects the magnitudes
+/// (project_to_limit_set) with the torque weighted by a²k_t/k_θ.
+///
+/// cap_trial_state is that cap for any DEM code: spring_history_friction
+/// (spring_friction.hpp) and the LAMMPS plugin (engines/lammps) both call it.
+
+#ifndef SPINSLIDE_CONTACT_TRIAL_CAP_HPP
+#define SPINSLIDE_CONTACT_TRIAL_CAP_HPP
+
+#include <spinslide/contact/contact_inputs.hpp>
+#include <spinslide/base/detail/checks.hpp>
+#include <spinslide/contact/detail/matrix3.hpp>
+#include <spinslide/base/detail/product.hpp>
+#include <spinslide/contact/detail/vector_access.hpp>
+#include <spinslide/contact/detail/vector_math.hpp>
+#include <spinslide/contact/limit_set.hpp>
+#include <spinslide/contact/projection_results.hpp>
+
+#include <boost/math/special_functions/fpclassify.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <initializer_list>
+#include <limits>
+
+namespace spinslide {
+
+/// A DEM contact's springs after the step's increments, and the damping's
+/// share of its trial friction.  `Vec` holds the tangent plane's vectors: a
+/// 2-component vector class in the plane's axes, or a 3-component one in the
+/// world's axes (tangential; a small normal part is capped with the rest):
+/// 3 components where std::tuple_size says so (std::array<Real, 3>) or the
+/// class has members x, y and z, else 2.
+template <class Vec, class Real>
+struct spring_trial {
+  using value_type = Real;  ///< the floating type
+  Vec displacement;         ///< ξ, the tangential spring (its force is −k_t ξ)
+  Real twist;               ///< φ, the twisting spring (its torque is −k_θ φ)
+  Vec damping_force;        ///< F_d, added to −k_t ξ in the trial force (zero: no damping)
+  Real damping_torque;      ///< T_d, added to −k_θ φ in the trial torque
+};
+
+/// The capped friction of a DEM contact, and what the contact keeps.
+template <class Vec, class Real>
+struct capped_friction {
+  using value_type = Real;  ///< the floating type
+  Vec force;                ///< F, on the body whose relative motion stretched the springs
+  Real torque;              ///< T about the normal
+  bool sticking;            ///< true: the trial state was admissible, and is kept
+  Real ratio;               ///< ε of the capped state (NaN if sticking, or without load)
+  Vec displacement;         ///< the tangential spring to keep: −(F − F_d)/k_t (ξ if sticking)
+  Real twist;               ///< the twisting spring to keep: −(T − T_d)/k_θ (φ if sticking)
+  curve_point<Real> point;  ///< where the slip left the curve (the given start if not slipping)
+  /// Where this cap left the limit curve, to start the contact's next one from.
+  curve_point<Real> curve() const { return point; }
+};
+
+namespace detail {
+
+// A trial state's numbers, checked: ξ and F_d with a z of 0 in 2-D.
+template <class Real>
+struct checked_trial {
+  vector3<Real> spring;   // ξ
+  vector3<Real> damping;  // F_d
+  Real twist;             // φ
+  Real damping_torque;    // T_d
+};
+
+// The cap on checked inputs (cap_trial_state, spring_history_friction):
+// the stiffnesses finite and > 0, `patch` checked, `start` a curve point
+// (ratio 0: none).  What could overflow on the way (the trial, the
+// rewritten springs) is checked here.  `Vec` has N = 2 or 3 components.
+// The first non-finite of `values`, reported through the policy under its
+// name (by default a domain error; else NaN); 0 if all are finite.  The
+// laws test finiteness in one expression and call this only when it fails.
+template <class Real, class Policy>
+Real report_not_finite(const char* function, std::initializer_list<const char*> names,
+                       std::initializer_list<Real> values, const Policy& pol) {
+  auto name = names.begin();
+  for (const Real& v : values) {
+    if (!(boost::math::isfinite)(v)) return checked(function, *name, v, argument_rule::finite, pol);
+    ++name;
+  }
+  return 0;
+}
+
+// The cap on checked inputs (cap_trial_state, spring_history_friction):
+// the stiffnesses finite and > 0, `patch` checked, `start` a curve point
+// (ratio 0: none).  What could overflow on the way (the trial, the torque
+// weight, the rewritten springs) is checked here.  `Vec` has N = 2 or 3
+// components.
+template <int N, class Vec, class Profile>
+capped_friction<Vec, typename Profile::value_type> cap_checked(
+    const Profile& profile, const checked_trial<typename Profile::value_type>& in,
+    const spring_stiffness<typename Profile::value_type>& springs,
+    const patch_values<typename Profile::value_type>& patch,
+    const curve_point<typename Profile::value_type>& start, const char* function) {
+  using Real = typename Profile::value_type;
+  using boost::math::isfinite;
+  using std::fabs;
+  const typename Profile::policy_type pol;
+  const Real kt = springs.tangential.value, kw = springs.twisting.value;
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  capped_friction<Vec, Real> out{Vec{}, Real(0), false, nan, Vec{}, Real(0), start};
+  auto reported = [&out](Real bad) {
+    for (Vec* v : {&out.force, &out.displacement}) write<N>(*v, vector3<Real>{bad, bad, bad});
+    out.torque = out.twist = out.ratio = bad;
+    return out;
+  };
+  // The trial friction, which must not overflow (|F| finite: each component is).
+  vector3<Real> force{};
+  for (std::size_t i = 0; i < std::size_t(N); ++i) force[i] = -kt * in.spring[i] + in.damping[i];
+  const Real t = -kw * in.twist + in.damping_torque;
+  const Real f = vector_norm(force[0], force[1], force[2]);
+  if (!((isfinite)(f) && (isfinite)(t)))
+    return reported(report_not_finite(
+        function, {"the trial force -k_t xi + damping", "the trial torque -k_w phi + damping"},
+        {f, t}, pol));
+  const Real a = patch.radius, load = patch.friction * patch.normal;
+  // The magnitudes in the limit set's units.  Where they overflow, the load
+  // is below 2^-1024 of the trial: the exact cap is as far below it, zero
+  // to the trial's precision, and is taken as zero (a contact coming apart).
+  const Real x = f / load, y = fabs(t) / a / load;
+  limit_projection<Real> cap{0, 0, f == 0 && t == 0, nan};
+  if (load > 0 && (isfinite)(x) && (isfinite)(y)) {
+    Real weight = a * a * kt / kw;
+    if (!(weight > 0 && (isfinite)(weight))) {  // a² alone out of range, or the whole
+      weight = checked(function, "the torque weight a^2 k_t/k_w", Real(product(a, a, kt) / kw),
+                       argument_rule::finite_positive, pol);
+      if (any_reported(weight)) return reported(weight);
+    }
+    const bool from_point = start.ratio > 0 && (isfinite)(start.force);
+    cap = limit_projector<Profile>(profile, {x, y}, weight)(start.ratio,
+                                                            from_point ? &start : nullptr);
+  }
+  out.sticking = cap.sticking;
+  out.ratio = cap.ratio;
+  if (cap.sticking) {
+    out.torque = t;
+    out.twist = in.twist;
+    write<N>(out.force, force);
+    write<N>(out.displacement, in.spring);
+    return out;
+  }
+  if (!(boost::math::isnan)(cap.ratio)) out.point = cap.curve();
+  // The force's direction and the torque's sign are kept; the springs
+  // rewritten to hold the result with the damping (a spring too soft for
+  // the capped force, F/k beyond the largest value, is a domain error).
+  const Real scale = f > 0 ? Real(cap.force * load / f) : Real(0);
+  vector3<Real> spring{};
+  for (std::size_t i = 0; i < std::size_t(N); ++i) {
+    force[i] *= scale;
+    spring[i] = -(force[i] - in.damping[i]) / kt;
+  }
+  out.torque = std::copysign(product(load, a, cap.torque), t);
+  out.twist = -(out.torque - in.damping_torque) / kw;
+  if (!((isfinite)(spring[0]) && (isfinite)(spring[1]) && (isfinite)(spring[2]) &&
+        (isfinite)(out.twist)))
+    return reported(report_not_finite(
+        function,
+        {"a rewritten spring -(F - damping)/k_t", "a rewritten spring -(F - damping)/k_t",
+         "a rewritten spring -(F - damping)/k_t", "the rewritten spring -(T - damping)/k_w"},
+        {spring[0], spring[1], spring[2], out.twist}, pol));
+  write<N>(out.force, force);
+  write<N>(out.displacement, spring);
+  return out;
+}
+
+}  // namespace detail
+
+/// The trial state `trial` of a DEM contact capped on `profile`'s limit set
+/// (see the file's comment), searching from `start`, the contact's last
+/// slip's curve_point (the last result's curve(); a point with ratio 0, as
+/// `{}`, starts without one).  Every component finite, the stiffnesses and
+/// a > 0, N and μ ≥ 0, start.ratio ≥ 0, all of the profile's value_type;
+/// otherwise a domain error: these are the only errors, and none comes from
+/// the search.  No allocation; when it slips, a few evaluations of the
+/// profile (one fewer from a start).
+template <class Profile, class Vec>
+capped_friction<Vec, typename Profile::value_type> cap_trial_state(
+    const Profile& profile, const spring_trial<Vec, typename Profile::value_type>& trial,
+    const spring_stiffness<typename Profile::value_type>& springs,
+    const force_contact<typename Profile::value_type>& contact,
+    const curve_point<typename Profile::value_type>& start = {}) {
+  using Real = typename Profile::value_type;
+  detail::require_projectable<Profile, Real>();
+  constexpr int n = detail::components<Vec>();
+  static_assert(detail::is_vector<Vec, 2>() && (n == 2 || n == 3),
+                "spinslide::cap_trial_state: the spring and the damping force must be 2- or "
+                "3-component vector classes (operator[] or members x, y[, z]), not pointers or "
+                "C arrays");
+  static const char* function =
+      "spinslide::cap_trial_state<%1%>(profile, trial, springs, contact, start)";
+  using detail::argument_rule;
+  using detail::checked;
+  const typename Profile::policy_type pol;
+  detail::checked_trial<Real> in{detail::read<n, Real>(trial.displacement),
+                                 detail::read<n, Real>(trial.damping_force), trial.twist,
+                                 trial.damping_torque};
+  for (Real& x : in.spring)
+    x = checked(function, "trial.displacement", x, argument_rule::finite, pol);
+  for (Real& x : in.damping)
+    x = checked(function, "trial.damping_force", x, argument_rule::finite, pol);
+  in.twist = checked(function, "trial.twist", in.twist, argument_rule::finite, pol);
+  in.damping_torque =
+      checked(function, "trial.damping_torque", in.damping_torque, argument_rule::finite, pol);
+  const tangential_stiffness<Real> kt{checked(function, "springs.tangential",
+                                              springs.tangential.value,
+                                              argument_rule::finite_positive, pol)};
+  const twisting_stiffness<Real> kw{checked(function, "springs.twisting", springs.twisting.value,
+                                            argument_rule::finite_positive, pol)};
+  const spring_stiffness<Real> k{kt, kw};
+  const auto patch = detail::checked_patch(function, contact, pol);
+  const Real s = checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
+  if (detail::any_reported(in.spring[0], in.spring[1], in.spring[2], in.damping[0], in.damping[1],
+                           in.damping[2], in.twist, in.damping_torque, k.tangential.value,
+                           k.twisting.value, patch.radius, patch.normal, patch.friction, s)) {
+    const Real nan = std::numeric_limits<Real>::quiet_NaN();
+    capped_friction<Vec, Real> out{Vec{}, nan, false, nan, Vec{}, nan, start};
+    for (Vec* v : {&out.force, &out.displacement})
+      detail::write<n>(*v, detail::vector3<Real>{nan, nan, nan});
+    return out;
+  }
+  return detail::cap_checked<n, Vec>(profile, in, k, patch, start, function);
+}
+
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_CONTACT_TRIAL_CAP_HPP

@@ -1,0 +1,59 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file throw_inputs.hpp
+/// Named inputs of a throw in SI units (simulate_throw_si, dynamics.hpp): the
+/// disk's radius, the gravity and the initial speed and spin each have their
+/// own type, as the contact laws' inputs do (with the shared
+/// friction_coefficient of base/named_inputs.hpp), so that a call cannot swap them:
+///
+///     spinslide::simulate_throw_si(spinslide::annulus<>(0.125), spinslide::disk_radius{0.06},
+///                                  spinslide::friction_coefficient{0.2},
+///                                  spinslide::gravity{9.81}, 0.5,
+///                                  spinslide::initial_speed{1.0},
+///                                  spinslide::initial_spin{20.0});
+
+#ifndef SPINSLIDE_MOTION_THROW_INPUTS_HPP
+#define SPINSLIDE_MOTION_THROW_INPUTS_HPP
+
+#include <spinslide/base/named_inputs.hpp>
+
+namespace spinslide {
+
+/// The radius R of the thrown disk's contact (m, > 0).
+template <class Real>
+struct disk_radius {
+  using value_type = Real;  ///< the floating type
+  /// Explicit, and not an aggregate: a plain number does not convert.
+  explicit constexpr disk_radius(Real v) : value(v) {}
+  Real value;  ///< R
+};
+/// The gravitational acceleration g (m/s², > 0).
+template <class Real>
+struct gravity {
+  using value_type = Real;  ///< the floating type
+  /// Explicit, and not an aggregate: a plain number does not convert.
+  explicit constexpr gravity(Real v) : value(v) {}
+  Real value;  ///< g
+};
+/// The initial speed v0 of a throw (m/s, ≥ 0).
+template <class Real>
+struct initial_speed {
+  using value_type = Real;  ///< the floating type
+  /// Explicit, and not an aggregate: a plain number does not convert.
+  explicit constexpr initial_speed(Real v) : value(v) {}
+  Real value;  ///< v0
+};
+/// The initial spin ω0 of a throw (rad/s, ≥ 0).
+template <class Real>
+struct initial_spin {
+  using value_type = Real;  ///< the floating type
+  /// Explicit, and not an aggregate: a plain number does not convert.
+  explicit constexpr initial_spin(Real v) : value(v) {}
+  Real value;  ///< ω0
+};
+
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_MOTION_THROW_INPUTS_HPP
