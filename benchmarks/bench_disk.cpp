@@ -26,11 +26,11 @@
 #include <benchmark/benchmark.h>
 
 #include <spinslide/contact/contact_law.hpp>
-#include <spinslide/values/disk.hpp>
 #include <spinslide/contact/impulse_friction.hpp>
 #include <spinslide/contact/limit_set.hpp>
-#include <spinslide/values/profile.hpp>
 #include <spinslide/contact/spring_friction.hpp>
+#include <spinslide/values/disk.hpp>
+#include <spinslide/values/profile.hpp>
 #include <spinslide/values/tabulated.hpp>
 
 #include <boost/math/constants/constants.hpp>

@@ -8,8 +8,8 @@
 // figures/approximations.png into the output directory:
 //   ./build/release/examples/approximations [output-directory]
 // The CMake target `approximations_doc` regenerates docs/approximations.md.
-#include <spinslide/values/approximations.hpp>
 #include <spinslide/spinslide.hpp>
+#include <spinslide/values/approximations.hpp>
 
 #include "gnuplot.hpp"
 

@@ -14,8 +14,8 @@
 
 #include "zoo.hpp"
 
-#include <spinslide/values/coupling.hpp>
 #include <spinslide/contact/limit_set.hpp>
+#include <spinslide/values/coupling.hpp>
 
 #include <cmath>
 #include <limits>

@@ -20,8 +20,8 @@
 #include "fuzz.hpp"
 
 #include <spinslide/contact/limit_set.hpp>
-#include <spinslide/values/profile.hpp>
 #include <spinslide/contact/trial_cap.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <array>
 #include <cmath>

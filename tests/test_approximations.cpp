@@ -5,8 +5,8 @@
 // what they imply for the end of a throw.
 #include <gtest/gtest.h>
 
-#include <spinslide/values/approximations.hpp>
 #include <spinslide/spinslide.hpp>
+#include <spinslide/values/approximations.hpp>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 

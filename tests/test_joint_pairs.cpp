@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include <spinslide/contact/joint_pairs.hpp>
 #include <spinslide/contact/impulse_friction.hpp>
+#include <spinslide/contact/joint_pairs.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include <array>

@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
 #include <spinslide/contact/spring_friction.hpp>
+#include <spinslide/spinslide.hpp>
 
 #include <array>
 #include <cmath>

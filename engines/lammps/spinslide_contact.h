@@ -49,8 +49,8 @@
 #include "error.h"
 #include "granular_model.h"
 
-#include <spinslide/values/profile.hpp>
 #include <spinslide/contact/trial_cap.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <array>
 #include <cmath>

@@ -19,8 +19,8 @@
 #define SPINSLIDE_TESTS_ENGINES_RANDOM_THROWS_HPP
 
 #include <gtest/gtest.h>
-#include <spinslide/motion/dynamics.hpp>
 #include <spinslide/contact/pair_report.hpp>
+#include <spinslide/motion/dynamics.hpp>
 #include <spinslide/values/profile.hpp>
 
 #include <algorithm>

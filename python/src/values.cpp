@@ -7,8 +7,8 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 
-#include <spinslide/values/disk.hpp>
 #include <spinslide/motion/terminal.hpp>
+#include <spinslide/values/disk.hpp>
 
 namespace spinslide_python {
 

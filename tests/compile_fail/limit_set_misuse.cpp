@@ -4,9 +4,9 @@
 // Misuse of project_to_limit_set (limit_set.hpp) must not compile.  Compiled
 // by tests/compile_fail/check.cmake once per MISUSE: 0 is the correct call,
 // every other value must fail with the message the test expects.
-#include <spinslide/values/approximations.hpp>
 #include <spinslide/contact/limit_set.hpp>
 #include <spinslide/contact/planar_metric.hpp>
+#include <spinslide/values/approximations.hpp>
 #include <spinslide/values/profile.hpp>
 #include <spinslide/values/tabulated.hpp>
 

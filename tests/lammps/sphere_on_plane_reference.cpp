@@ -37,8 +37,8 @@
 //
 //   sphere_on_plane_reference [dt]              the stop times, coupling yes and no
 //   sphere_on_plane_reference --convergence     the stop times for dt = 4e-5 ... 2.5e-6
-#include <spinslide/values/approximations.hpp>
 #include <spinslide/contact/limit_set.hpp>
+#include <spinslide/values/approximations.hpp>
 #include <spinslide/values/profile.hpp>
 
 #include <array>

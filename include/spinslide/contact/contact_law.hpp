@@ -16,9 +16,9 @@
 #ifndef SPINSLIDE_CONTACT_CONTACT_LAW_HPP
 #define SPINSLIDE_CONTACT_CONTACT_LAW_HPP
 
-#include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/base/detail/product.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/detail/vector_access.hpp>
 #include <spinslide/contact/detail/vector_math.hpp>
 #include <spinslide/values/profile.hpp>

@@ -24,11 +24,11 @@
 #ifndef SPINSLIDE_CONTACT_IMPULSE_FRICTION_HPP
 #define SPINSLIDE_CONTACT_IMPULSE_FRICTION_HPP
 
-#include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/base/detail/product.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/detail/impulse_frame.hpp>
 #include <spinslide/contact/detail/impulse_in_frame.hpp>
-#include <spinslide/base/detail/product.hpp>
 #include <spinslide/contact/detail/vector_access.hpp>
 #include <spinslide/contact/limit_set.hpp>
 #include <spinslide/contact/planar_metric.hpp>

@@ -69,8 +69,8 @@ class pair_coupling {
  private:
   std::size_t index(std::size_t i, std::size_t j) const {
     if (i >= n_ || j >= n_)
-      throw std::out_of_range("spinslide::pair_coupling::at: block (" + std::to_string(i) +
-                              ", " + std::to_string(j) + ") of " + std::to_string(n_) + " pairs");
+      throw std::out_of_range("spinslide::pair_coupling::at: block (" + std::to_string(i) + ", " +
+                              std::to_string(j) + ") of " + std::to_string(n_) + " pairs");
     return i * n_ + j;
   }
   std::size_t n_;
@@ -154,9 +154,9 @@ class joint_solver {
                       const joint_settings& settings = {}) {
     const std::size_t n = pairs.size();
     if (w.size() != n)
-      detail::refuse("spinslide::joint_solver::solve",
-                     "a coupling of " + std::to_string(w.size()) + " pairs for " +
-                         std::to_string(n) + " pairs");
+      detail::refuse("spinslide::joint_solver::solve", "a coupling of " + std::to_string(w.size()) +
+                                                           " pairs for " + std::to_string(n) +
+                                                           " pairs");
     own_.clear();
     slip_.clear();
     double scale = 0;  // Σ sᵢᵀWᵢᵢ⁻¹sᵢ: twice the free motions' energy, pair by pair

@@ -22,8 +22,8 @@
 #include <spinslide/contact/detail/limit_projector.hpp>
 #include <spinslide/contact/detail/metric_projector.hpp>
 #include <spinslide/contact/planar_metric.hpp>
-#include <spinslide/values/profile_concept.hpp>
 #include <spinslide/contact/projection_results.hpp>
+#include <spinslide/values/profile_concept.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 

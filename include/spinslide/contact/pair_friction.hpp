@@ -15,8 +15,8 @@
 #ifndef SPINSLIDE_CONTACT_PAIR_FRICTION_HPP
 #define SPINSLIDE_CONTACT_PAIR_FRICTION_HPP
 
-#include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/impulse_friction.hpp>
 #include <spinslide/contact/planar_metric.hpp>
 #include <spinslide/values/profile.hpp>
@@ -137,8 +137,9 @@ using patch_profile [[deprecated("use spinslide::patch_profile")]] = spinslide::
 /// Deprecated: spinslide::hertz_radius.
 using hertz_radius [[deprecated("use spinslide::hertz_radius")]] = spinslide::hertz_radius;
 /// Deprecated: spinslide::pair_friction.
-using pair_friction [[deprecated("use spinslide::pair_friction (<spinslide/contact/pair_friction.hpp>)")]] =
-    spinslide::pair_friction;
+using pair_friction
+    [[deprecated("use spinslide::pair_friction (<spinslide/contact/pair_friction.hpp>)")]] =
+        spinslide::pair_friction;
 }  // namespace engines
 
 }  // namespace spinslide

@@ -20,9 +20,9 @@
 #ifndef SPINSLIDE_CONTACT_SPRING_FRICTION_HPP
 #define SPINSLIDE_CONTACT_SPRING_FRICTION_HPP
 
-#include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/base/detail/product.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/detail/vector_access.hpp>
 #include <spinslide/contact/limit_set.hpp>
 #include <spinslide/contact/trial_cap.hpp>

@@ -24,10 +24,10 @@
 #ifndef SPINSLIDE_CONTACT_TRIAL_CAP_HPP
 #define SPINSLIDE_CONTACT_TRIAL_CAP_HPP
 
-#include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/base/detail/checks.hpp>
-#include <spinslide/contact/detail/matrix3.hpp>
 #include <spinslide/base/detail/product.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
+#include <spinslide/contact/detail/matrix3.hpp>
 #include <spinslide/contact/detail/vector_access.hpp>
 #include <spinslide/contact/detail/vector_math.hpp>
 #include <spinslide/contact/limit_set.hpp>

@@ -22,8 +22,8 @@
 #define SPINSLIDE_MOTION_BATCH_THROWS_HPP
 
 #include <spinslide/motion/dynamics.hpp>
-#include <spinslide/values/profile_concept.hpp>
 #include <spinslide/motion/tabulated_throw.hpp>
+#include <spinslide/values/profile_concept.hpp>
 
 #include <algorithm>
 #include <atomic>

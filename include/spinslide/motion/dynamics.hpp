@@ -18,9 +18,9 @@
 #include <spinslide/motion/detail/stop_integrator.hpp>
 #include <spinslide/motion/equations_of_motion.hpp>
 #include <spinslide/motion/motion_types.hpp>
-#include <spinslide/values/profile_concept.hpp>
 #include <spinslide/motion/terminal.hpp>
 #include <spinslide/motion/throw_inputs.hpp>
+#include <spinslide/values/profile_concept.hpp>
 
 #include <limits>
 #include <vector>

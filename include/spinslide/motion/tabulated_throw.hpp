@@ -11,8 +11,8 @@
 #define SPINSLIDE_MOTION_TABULATED_THROW_HPP
 
 #include <spinslide/base/detail/checks.hpp>
-#include <spinslide/values/detail/piecewise_chebyshev.hpp>
 #include <spinslide/motion/dynamics.hpp>
+#include <spinslide/values/detail/piecewise_chebyshev.hpp>
 #include <spinslide/values/profile.hpp>
 #include <spinslide/values/profile_concept.hpp>
 

@@ -17,9 +17,9 @@
 
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/motion/detail/ratio_flow.hpp>
+#include <spinslide/motion/terminal_state.hpp>
 #include <spinslide/values/profile.hpp>
 #include <spinslide/values/profile_concept.hpp>
-#include <spinslide/motion/terminal_state.hpp>
 
 #include <boost/math/tools/toms748_solve.hpp>
 

@@ -8,8 +8,8 @@
 #ifndef SPINSLIDE_CONTACT_DETAIL_DISSIPATION_HESSIAN_HPP
 #define SPINSLIDE_CONTACT_DETAIL_DISSIPATION_HESSIAN_HPP
 
-#include <spinslide/values/detail/force_slope.hpp>
 #include <spinslide/contact/detail/matrix3.hpp>
+#include <spinslide/values/detail/force_slope.hpp>
 #include <spinslide/values/force_torque_result.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>

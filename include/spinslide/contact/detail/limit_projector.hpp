@@ -30,10 +30,10 @@
 #ifndef SPINSLIDE_CONTACT_DETAIL_LIMIT_PROJECTOR_HPP
 #define SPINSLIDE_CONTACT_DETAIL_LIMIT_PROJECTOR_HPP
 
-#include <spinslide/values/detail/force_slope.hpp>
 #include <spinslide/base/detail/product.hpp>
-#include <spinslide/values/force_torque_result.hpp>
 #include <spinslide/contact/projection_results.hpp>
+#include <spinslide/values/detail/force_slope.hpp>
+#include <spinslide/values/force_torque_result.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/precision.hpp>

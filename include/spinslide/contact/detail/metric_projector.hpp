@@ -25,11 +25,11 @@
 #define SPINSLIDE_CONTACT_DETAIL_METRIC_PROJECTOR_HPP
 
 #include <spinslide/contact/detail/dissipation_hessian.hpp>
-#include <spinslide/values/detail/force_slope.hpp>
 #include <spinslide/contact/detail/limit_projector.hpp>
 #include <spinslide/contact/detail/matrix3.hpp>
 #include <spinslide/contact/planar_metric.hpp>
 #include <spinslide/contact/projection_results.hpp>
+#include <spinslide/values/detail/force_slope.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/precision.hpp>

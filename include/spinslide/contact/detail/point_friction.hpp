@@ -16,8 +16,8 @@
 #ifndef SPINSLIDE_CONTACT_DETAIL_POINT_FRICTION_HPP
 #define SPINSLIDE_CONTACT_DETAIL_POINT_FRICTION_HPP
 
-#include <spinslide/contact/detail/matrix3.hpp>
 #include <spinslide/base/detail/product.hpp>
+#include <spinslide/contact/detail/matrix3.hpp>
 
 #include <boost/math/tools/precision.hpp>
 

@@ -24,7 +24,6 @@
 
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/motion/detail/panel_width_controller.hpp>
-#include <spinslide/values/detail/singular_ratios.hpp>
 #include <spinslide/motion/detail/stop_leg.hpp>
 #include <spinslide/motion/detail/stop_panel.hpp>
 #include <spinslide/motion/detail/stop_samples.hpp>
@@ -32,6 +31,7 @@
 #include <spinslide/motion/detail/uniform_stop.hpp>
 #include <spinslide/motion/motion_types.hpp>
 #include <spinslide/motion/terminal.hpp>
+#include <spinslide/values/detail/singular_ratios.hpp>
 
 #include <boost/math/policies/error_handling.hpp>
 #include <boost/math/tools/precision.hpp>

@@ -340,7 +340,7 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
       const patch& p = patches_[i];
       for (std::size_t j = 0; j < n; ++j) coupling_.at(i, j) = block(p, patches_[j]);
       joint_.push_back(joint_pair{std::ref(p.pair->friction), free_motion(p),
-                                           normal_impulse<double>{p.sum.impulse}, p.sum.depth});
+                                  normal_impulse<double>{p.sum.impulse}, p.sum.depth});
     }
     solver_.solve(joint_, coupling_);
     for (std::size_t i = 0; i < n; ++i) {

@@ -39,9 +39,9 @@
 #include <mujoco/mujoco.h>
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/contact/joint_pairs.hpp>
-#include <spinslide/engines/mujoco_hessian.hpp>
 #include <spinslide/contact/pair_friction.hpp>
 #include <spinslide/contact/pair_report.hpp>
+#include <spinslide/engines/mujoco_hessian.hpp>
 
 #include <array>
 #include <cmath>
@@ -316,8 +316,8 @@ class coupled_friction {
       // Started from the pair's last impulse (0 after a step without
       // contact): in a steady contact the sweeps then have little to do.
       joint_.push_back(joint_pair{std::ref(pair.friction), pair.free_motion,
-                                           normal_impulse<double>{pair.report.normal_impulse},
-                                           pair.report.penetration, pair.impulse});
+                                  normal_impulse<double>{pair.report.normal_impulse},
+                                  pair.report.penetration, pair.impulse});
     }
     last_solve_ = solver_.solve(joint_, coupling_);
     for (std::size_t k = 0; k < active_.size(); ++k) {
