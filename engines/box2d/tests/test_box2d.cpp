@@ -52,12 +52,12 @@ TEST(Box2dAdapter, RefusesMisuse) {
   EXPECT_THROW(table_friction(gravity{0.0}), std::domain_error);
   EXPECT_THROW(table_friction(gravity{-9.81}), std::domain_error);
   table_friction table(gravity{g});
-  EXPECT_THROW(table.add(nullptr, puck_friction()), std::invalid_argument);
+  EXPECT_THROW(table.couple(nullptr, puck_friction()), std::invalid_argument);
   puck_world w;
   b2BodyDef fixed;
   b2Body* ground = w.world.CreateBody(&fixed);  // static: no mass
-  EXPECT_THROW(table.add(ground, puck_friction()), std::invalid_argument);
-  table.add(w.puck, puck_friction());
+  EXPECT_THROW(table.couple(ground, puck_friction()), std::invalid_argument);
+  table.couple(w.puck, puck_friction());
   EXPECT_THROW(table.apply(0.0), std::domain_error);
   EXPECT_THROW(table.apply(-dt), std::domain_error);
   EXPECT_THROW(static_cast<void>(table.report(1)), std::out_of_range);
@@ -70,7 +70,7 @@ TEST(Box2dAdapter, HoldsBelowTheFrictionForceAndSlidesAboveIt) {
   for (const double fraction : {0.9, 1.5}) {
     puck_world w;
     table_friction table(gravity{g});
-    table.add(w.puck, puck_friction());
+    table.couple(w.puck, puck_friction());
     const double pull = fraction * mu * mass * g;
     for (int i = 0; i < 1000; ++i) {
       w.puck->ApplyLinearImpulseToCenter(b2Vec2(static_cast<float>(pull * dt), 0.0f), true);
@@ -95,7 +95,7 @@ TEST(Box2dAdapter, PureSpinAndPureSlideStopAtTheirClosedForms) {
   for (const bool spin : {true, false}) {
     puck_world w;
     table_friction table(gravity{g});
-    table.add(w.puck, puck_friction());
+    table.couple(w.puck, puck_friction());
     const double v0 = 1.0, w0 = 20.0;
     if (spin)
       w.puck->SetAngularVelocity(static_cast<float>(w0));
@@ -121,7 +121,7 @@ TEST(Box2dAdapter, PureSpinAndPureSlideStopAtTheirClosedForms) {
 TEST(Box2dAdapter, RegressionAPuckAtRestFallsAsleep) {
   puck_world w;
   table_friction table(gravity{g});
-  table.add(w.puck, puck_friction());
+  table.couple(w.puck, puck_friction());
   w.puck->SetLinearVelocity(b2Vec2(0.5f, 0.0f));
   w.puck->SetAngularVelocity(5.0f);
   int asleep_from = -1;
@@ -144,7 +144,7 @@ TEST(Box2dAdapter, RegressionAPuckAtRestFallsAsleep) {
 TEST(Box2dAdapter, ReportKeepsTheCommonConvention) {
   puck_world w;
   table_friction table(gravity{g});
-  const std::size_t index = table.add(w.puck, puck_friction());
+  const std::size_t index = table.couple(w.puck, puck_friction());
   w.puck->SetLinearVelocity(b2Vec2(0.6f, -0.3f));
   w.puck->SetAngularVelocity(-15.0f);
   int slipping = 0;
@@ -180,7 +180,7 @@ TEST(Box2dAdapter, RandomThrowsStopAtTheExactStop) {
     const random_throws::throw_case& c = cs[k];
     puck_world w;
     table_friction table(gravity{g});
-    table.add(w.puck, puck_friction());
+    table.couple(w.puck, puck_friction());
     w.puck->SetLinearVelocity(b2Vec2(static_cast<float>(c.speed * std::cos(c.direction)),
                                      static_cast<float>(c.speed * std::sin(c.direction))));
     w.puck->SetAngularVelocity(static_cast<float>(c.spin));

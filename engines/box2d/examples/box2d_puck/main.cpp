@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
 
   // snippet begin
   spinslide::box2d::table_friction table(spinslide::box2d::gravity{g});
-  table.add(
+  table.couple(
       a, spinslide::pair_friction(spinslide::uniform_disk<>(), spinslide::patch_radius<double>{R},
                                   spinslide::friction_coefficient<double>{mu}));
   // snippet end

@@ -7,7 +7,7 @@
 /// Box2D world (2.4; docs/engines.md, "Box2D").
 ///
 ///     spinslide::box2d::table_friction table(spinslide::box2d::gravity{9.81});
-///     table.add(puck, spinslide::pair_friction(...));
+///     table.couple(puck, spinslide::pair_friction(...));
 ///     for (...) { table.apply(dt); world.Step(dt, 8, 3); }
 ///
 /// A top-down world has no normal contact with the table: its normal force
@@ -60,11 +60,11 @@ class table_friction {
                                                       g.value,
                                                       detail::argument_rule::finite_positive)) {}
 
-  /// Adds `body` (a dynamic body with mass; it must outlive its use here)
+  /// Couples `body` (a dynamic body with mass; it must outlive its use here)
   /// with `friction` (its patch: pair_friction.hpp); returns its index for
-  /// sticking().  A null or massless body is std::invalid_argument.
-  std::size_t add(b2Body* body, const spinslide::pair_friction& friction) {
-    static const char* function = "spinslide::box2d::table_friction::add";
+  /// report().  A null or massless body is std::invalid_argument.
+  std::size_t couple(b2Body* body, const spinslide::pair_friction& friction) {
+    static const char* function = "spinslide::box2d::table_friction::couple";
     detail::required(function, "the body", body);
     if (!(body->GetMass() > 0)) detail::refuse(function, "a dynamic body with mass is needed");
     bodies_.push_back({body, friction, pair_report{}});
@@ -79,7 +79,7 @@ class table_friction {
     for (auto& b : bodies_) apply_one(b, dt);
   }
 
-  /// Body `index`'s last step (the index add() returned); an index beyond
+  /// Body `index`'s last step (the index couple() returned); an index beyond
   /// the bodies added is std::out_of_range, naming both.
   const pair_report& report(std::size_t index) const {
     return bodies_[detail::checked_index("spinslide::box2d::table_friction::report", "body", index,
