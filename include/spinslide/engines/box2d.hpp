@@ -62,7 +62,7 @@ class table_friction {
 
   /// Adds `body` (a dynamic body with mass; it must outlive its use here)
   /// with `friction` (its patch: pair_friction.hpp); returns its index for
-  /// sticking().  A null or massless body is std::invalid_argument.
+  /// report().  A null or massless body is std::invalid_argument.
   std::size_t add(b2Body* body, const spinslide::pair_friction& friction) {
     static const char* function = "spinslide::box2d::table_friction::add";
     detail::required(function, "the body", body);
@@ -85,11 +85,6 @@ class table_friction {
     return bodies_[detail::checked_index("spinslide::box2d::table_friction::report", "body", index,
                                          bodies_.size())]
         .last;
-  }
-
-  /// True if body `index`'s last impulse stopped it exactly.
-  [[deprecated("use report(index).sticking")]] bool sticking(std::size_t index) const {
-    return report(index).sticking;
   }
 
  private:
