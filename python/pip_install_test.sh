@@ -10,7 +10,7 @@ python=$1 source=$2 work=$3
 rm -rf "$work"
 mkdir -p "$work/src"
 cd "$source"
-cp -r pyproject.toml setup.py LICENSE include python "$work/src/"
+cp -r pyproject.toml setup.py VERSION LICENSE include python "$work/src/"
 mkdir -p "$work/src/docs" && cp docs/python.md "$work/src/docs/"
 "$python" -m venv --system-site-packages "$work/venv"
 "$work/venv/bin/pip" install --no-build-isolation --no-index --quiet "$work/src"
