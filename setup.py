@@ -5,14 +5,19 @@
 
 The same sources as CMake's target spinslide_python_core (python/CMakeLists.txt):
 python/src/*.cpp on the library's headers in include/.  The translation units
-compile in parallel (SPINSLIDE_BUILD_JOBS, default: all cores).
+compile in parallel (SPINSLIDE_BUILD_JOBS, default: all cores).  The version
+is VERSION's (pyproject.toml reads it for the metadata; the module gets it as
+SPINSLIDE_VERSION, spinslide.__version__).
 """
 from glob import glob
+from pathlib import Path
 
 from pybind11.setup_helpers import ParallelCompile, Pybind11Extension
 from setuptools import setup
 
 ParallelCompile("SPINSLIDE_BUILD_JOBS", default=0).install()
+
+VERSION = (Path(__file__).resolve().parent / "VERSION").read_text(encoding="utf-8").strip()
 
 setup(
     ext_modules=[
@@ -22,6 +27,7 @@ setup(
             include_dirs=["include"],
             cxx_std=17,
             extra_compile_args=["-O3"],
+            define_macros=[("SPINSLIDE_VERSION", f'"{VERSION}"')],
         )
     ],
 )

@@ -10,10 +10,19 @@ python=$1 source=$2 work=$3
 rm -rf "$work"
 mkdir -p "$work/src"
 cd "$source"
-cp -r pyproject.toml setup.py LICENSE include python "$work/src/"
+cp -r pyproject.toml setup.py VERSION LICENSE include python "$work/src/"
 mkdir -p "$work/src/docs" && cp docs/python.md "$work/src/docs/"
 "$python" -m venv --system-site-packages "$work/venv"
 "$work/venv/bin/pip" install --no-build-isolation --no-index --quiet "$work/src"
 cd "$work"  # not the source tree: the installed package is imported
 "$work/venv/bin/python" -c 'import spinslide, sys; print("installed:", spinslide.__file__, spinslide.__version__)'
+# The installed package's version, module and metadata, is VERSION's.
+"$work/venv/bin/python" - "$(cat "$source/VERSION")" <<'EOF'
+import importlib.metadata, sys
+import spinslide
+said = {"spinslide.__version__": spinslide.__version__,
+        "its metadata": importlib.metadata.version("spinslide")}
+wrong = {k: v for k, v in said.items() if v != sys.argv[1]}
+sys.exit(f"VERSION is {sys.argv[1]}, but {wrong}" if wrong else 0)
+EOF
 SPINSLIDE_SOURCE_DIR="$source" "$work/venv/bin/python" -m pytest -q -p no:cacheprovider "$source/python/tests"

@@ -48,7 +48,7 @@ extern "C" void lammpsplugin_init(void* lmp, void* handle, void* regfunc) {
   plugin.name = "granular/spinslide";
   plugin.info =
       "Hertz-Mindlin-Marshall granular contacts with coupled sliding and twisting "
-      "friction (spinslide, Coulomb-Contensou) v0.1";
+      "friction (spinslide, Coulomb-Contensou) v" SPINSLIDE_VERSION;
   plugin.author = "the spinslide developers";
   plugin.creator.v1 = &create_pair_granular_spinslide;
   plugin.handle = handle;
@@ -58,20 +58,20 @@ extern "C" void lammpsplugin_init(void* lmp, void* handle, void* regfunc) {
   plugin.name = "wall/gran/spinslide";
   plugin.info =
       "Granular plane and z-cylinder walls with the Hertz-Mindlin-Marshall contacts of "
-      "granular/spinslide (spinslide, Coulomb-Contensou) v0.1";
+      "granular/spinslide (spinslide, Coulomb-Contensou) v" SPINSLIDE_VERSION;
   plugin.creator.v2 = &create_fix_wall_gran_spinslide;
   (*register_plugin)(&plugin, lmp);
 
   plugin.name = "wall/gran/region/spinslide";
   plugin.info =
       "Granular walls on any region's surface, moving and rotating, with the contacts of "
-      "granular/spinslide (spinslide, Coulomb-Contensou) v0.1";
+      "granular/spinslide (spinslide, Coulomb-Contensou) v" SPINSLIDE_VERSION;
   plugin.creator.v2 = &create_fix_wall_gran_region_spinslide;
   (*register_plugin)(&plugin, lmp);
 
   // The pair style's own history fix (fix_spinslide_history.h); not for inputs.
   plugin.name = "NEIGH_HISTORY/SPINSLIDE";
-  plugin.info = "Contact history of pair granular/spinslide (internal) v0.1";
+  plugin.info = "Contact history of pair granular/spinslide (internal) v" SPINSLIDE_VERSION;
   plugin.creator.v2 = &create_fix_spinslide_history;
   (*register_plugin)(&plugin, lmp);
 }

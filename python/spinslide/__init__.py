@@ -58,7 +58,7 @@ from ._core import (  # noqa: F401  (re-exported)
 )
 from . import _core
 
-__version__ = "1.0.0"
+__version__: str = _core.__version__  # the VERSION file's, compiled into the module
 
 __all__ = [
     "Annulus", "Boussinesq", "Hertz", "Profile", "RadialProfile", "RatioFlowZero", "Ring", "Scaled",

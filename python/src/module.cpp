@@ -8,6 +8,12 @@
 
 #include <stdexcept>
 
+// The package's version, VERSION's at the repository root: CMake
+// (python/CMakeLists.txt) and setup.py define it.
+#ifndef SPINSLIDE_VERSION
+#error "spinslide._core: compile with -DSPINSLIDE_VERSION=\"<the VERSION file's version>\""
+#endif
+
 PYBIND11_MODULE(_core, m) {
   m.doc() =
       "Coupled sliding and spinning friction (Coulomb-Contensou), exact: the compiled core of "
@@ -15,6 +21,7 @@ PYBIND11_MODULE(_core, m) {
   // The library's bad-argument errors are std::domain_error (ValueError in
   // Python, by pybind11's own translation); its message names the function,
   // the argument and the rule.
+  m.attr("__version__") = SPINSLIDE_VERSION;
   spinslide_python::bind_values(m);
   spinslide_python::bind_profiles(m);
   spinslide_python::bind_dynamics(m);

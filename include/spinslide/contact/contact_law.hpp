@@ -180,17 +180,6 @@ class contact_law {
     return out;
   }
 
-  /// The 3-D contact with the normal as a plain vector: three vectors of one
-  /// type in a row, which a call can swap unnoticed.  Deprecated since issue
-  /// 28; wrap the normal: law(v, w, contact_normal{n}, contact).
-  template <class Vec3, class Normal>
-  [[deprecated(
-      "spinslide: pass the normal as contact_normal{n} (issue 28)")]] spatial_friction<Vec3>
-  operator()(const Vec3& velocity, const Vec3& angular_velocity, const Normal& normal,
-             const force_contact<Real>& contact) const {
-    return (*this)(velocity, angular_velocity, contact_normal<Vec3>(normal), contact);
-  }
-
  private:
   // |F| (≥ 0, against v) and the signed torque about the normal.
   // The checks of operator(): false, with f = t = the policy's NaN, on bad input.

@@ -38,23 +38,6 @@
 
 namespace spinslide {
 
-/// \deprecated impulse_friction returns a friction_result (projection_results.hpp):
-/// `force` for `linear`, `torque` for `angular`, and curve() to start the
-/// next step from.  This type converts from it, and goes in the next release.
-template <class Vec2, class Real>
-struct [[deprecated(
-    "spinslide: impulse_friction returns friction_result {force, torque, "
-    "sticking, ratio, curve()}")]] friction_impulse {
-  using value_type = Real;  ///< the floating type
-  Vec2 linear;              ///< (P_x, P_y)
-  Real angular;             ///< L
-  bool sticking;            ///< true: the impulse stops the contact exactly
-  Real ratio;               ///< ε after the step (NaN if sticking)
-  /// The old names of a friction_result's values.
-  friction_impulse(const friction_result<Vec2, Real>& r)
-      : linear(r.force), angular(r.torque), sticking(r.sticking), ratio(r.ratio) {}
-};
-
 /// The friction impulse for one contact over one step (see the file's
 /// comment).  `velocity`: the relative sliding velocity before friction (a
 /// 2-component vector class, in the tangent plane's axes); `spin`: the
@@ -175,25 +158,6 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
   out.torque = detail::product(load, a, r.point.torque);
   return out;
 }
-
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
-#endif
-/// \deprecated As above from `curve_point<Real>{start.value}`; goes in the next release.
-template <class Profile, class Vec2>
-[[deprecated("spinslide: pass curve_point<Real>{ratio}")]] friction_result<
-    Vec2, typename Profile::value_type>
-impulse_friction(const Profile& profile, const Vec2& velocity, typename Profile::value_type spin,
-                 const planar_metric<typename Profile::value_type>& inverse_mass,
-                 const impulse_contact<typename Profile::value_type>& contact,
-                 starting_ratio<typename Profile::value_type> start) {
-  return impulse_friction(profile, velocity, spin, inverse_mass, contact,
-                          curve_point<typename Profile::value_type>(start));
-}
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
 
 }  // namespace spinslide
 

@@ -176,29 +176,6 @@ wrench_projection<Real> project_to_limit_set(const Profile& profile,
       &start);
 }
 
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
-#endif
-/// \deprecated As above from `curve_point<Real>{start.value}`; goes in the next release.
-template <class Profile, class Real>
-[[deprecated("spinslide: pass curve_point<Real>{ratio}")]] limit_projection<Real>
-project_to_limit_set(const Profile& profile, Real force, Real torque, Real torque_weight,
-                     starting_ratio<Real> start) {
-  return project_to_limit_set(profile, force, torque, torque_weight, curve_point<Real>(start));
-}
-
-/// \deprecated As above from `curve_point<Real>{start.value}`; goes in the next release.
-template <class Profile, class Real>
-[[deprecated("spinslide: pass curve_point<Real>{ratio}")]] wrench_projection<Real>
-project_to_limit_set(const Profile& profile, const tangent_wrench<Real>& point,
-                     const planar_metric<Real>& metric, starting_ratio<Real> start) {
-  return project_to_limit_set(profile, point, metric, curve_point<Real>(start));
-}
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
-
 }  // namespace spinslide
 
 #endif  // SPINSLIDE_CONTACT_LIMIT_SET_HPP

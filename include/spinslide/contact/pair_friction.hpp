@@ -130,18 +130,6 @@ class pair_friction {
   curve_point<double> last_;  // where the last slip left the curve ({}: none)
 };
 
-/// The names from before issue 27 moved pair_friction into the core.
-namespace engines {
-/// Deprecated: spinslide::patch_profile.
-using patch_profile [[deprecated("use spinslide::patch_profile")]] = spinslide::patch_profile;
-/// Deprecated: spinslide::hertz_radius.
-using hertz_radius [[deprecated("use spinslide::hertz_radius")]] = spinslide::hertz_radius;
-/// Deprecated: spinslide::pair_friction.
-using pair_friction
-    [[deprecated("use spinslide::pair_friction (<spinslide/contact/pair_friction.hpp>)")]] =
-        spinslide::pair_friction;
-}  // namespace engines
-
 }  // namespace spinslide
 
 #endif  // SPINSLIDE_CONTACT_PAIR_FRICTION_HPP

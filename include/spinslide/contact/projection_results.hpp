@@ -99,16 +99,6 @@ struct friction_result {
   curve_point<Real> curve() const { return point; }
 };
 
-/// \deprecated The warm start is a curve_point (`curve_point<Real>{ε}` for a
-/// ratio alone); this name goes in the next release.
-template <class Real>
-struct [[deprecated("spinslide: use curve_point<Real>{ratio}")]] starting_ratio {
-  using value_type = Real;  ///< the floating type
-  Real value;               ///< ε ≥ 0 (0 or +∞: no guess)
-  /// The ratio-only curve point curve_point<Real>{value}.
-  operator curve_point<Real>() const { return curve_point<Real>{value}; }
-};
-
 }  // namespace spinslide
 
 #endif  // SPINSLIDE_CONTACT_PROJECTION_RESULTS_HPP

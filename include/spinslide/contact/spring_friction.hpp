@@ -45,22 +45,6 @@ struct spring_history {
   curve_point<Real> curve{};
 };
 
-/// \deprecated spring_history_friction returns a friction_result
-/// (projection_results.hpp), with the same first four names and curve();
-/// this type converts from it, and goes in the next release.
-template <class Vec2, class Real>
-struct [[deprecated(
-    "spinslide: spring_history_friction returns friction_result")]] spring_friction {
-  using value_type = Real;  ///< the floating type
-  Vec2 force;               ///< F
-  Real torque;              ///< T about the normal
-  bool sticking;            ///< true: the springs' trial state was admissible and is kept
-  Real ratio;               ///< ε of the capped state (NaN if sticking)
-  /// The old names of a friction_result's values.
-  spring_friction(const friction_result<Vec2, Real>& r)
-      : force(r.force), torque(r.torque), sticking(r.sticking), ratio(r.ratio) {}
-};
-
 /// The springs of a Hertz–Mindlin contact of radius a: the tangential
 /// stiffness k_t (Mindlin: 8G*a for the effective shear modulus G*), and
 /// Marshall's twisting stiffness k_t a²/2 (as LAMMPS' `twisting marshall`).

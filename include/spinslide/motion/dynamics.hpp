@@ -129,21 +129,6 @@ stop_result<Real> simulate_throw_si(const Profile& profile, disk_radius<Real> ra
   return r;
 }
 
-/// \deprecated Six numbers in a row: use the overload with named inputs
-/// (throw_inputs.hpp; issue 28); goes in the next release.
-template <class Profile, class Real>
-[[deprecated(
-    "spinslide: name the inputs: simulate_throw_si(profile, disk_radius{R}, "
-    "friction_coefficient{mu}, gravity{g}, gamma, initial_speed{v0}, "
-    "initial_spin{w0})")]] stop_result<Real>
-simulate_throw_si(const Profile& profile, Real radius, Real friction_coefficient, Real gravity,
-                  Real inertia_ratio, Real v0, Real omega0) {
-  return simulate_throw_si(profile, disk_radius<Real>(radius),
-                           spinslide::friction_coefficient<Real>(friction_coefficient),
-                           spinslide::gravity<Real>(gravity), inertia_ratio,
-                           initial_speed<Real>(v0), initial_spin<Real>(omega0));
-}
-
 /// Dimensionless stop time t* of a throw (v0*, ω0*) for any profile and γ.
 template <class Profile, class Real>
 Real stop_time(const Profile& profile, Real inertia_ratio, Real v0, Real omega0) {

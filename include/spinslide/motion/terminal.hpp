@@ -193,16 +193,6 @@ std::vector<ratio_flow_zero<Real>> ratio_flow_zeros(const Profile& profile, Real
   return zeros;
 }
 
-/// \deprecated The zeros of the flow are ratio_flow_zeros (issue 28: the old
-/// name read as a plural of terminal_ratio(), the paper's ε₀); goes in the
-/// next release.
-template <class Profile, class Real>
-[[deprecated(
-    "spinslide: terminal_ratios is now ratio_flow_zeros")]] std::vector<ratio_flow_zero<Real>>
-terminal_ratios(const Profile& profile, Real inertia_ratio) {
-  return ratio_flow_zeros(profile, inertia_ratio);
-}
-
 /// The terminal regime for a motion that starts sliding and spinning
 /// (0 < ε < ∞), and the limit of ε, where that does not depend on the initial
 /// ratio: the flow has one attractor (0, ∞ or one zero ε₀).  If it has more

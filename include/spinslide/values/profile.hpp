@@ -412,15 +412,6 @@ weighted_sum(const Real (&)[N], Profiles...) -> weighted_sum<Real, Profiles...>;
 template <class Real, std::size_t N, class... Profiles>
 weighted_sum(const std::array<Real, N>&, Profiles...) -> weighted_sum<Real, Profiles...>;
 
-/// \deprecated Class template argument deduction is the one way to build a
-/// weighted_sum, as every other profile (issue 28): weighted_sum({0.6, 0.4},
-/// a, b); goes in the next release.
-template <class Real, class... Profiles>
-[[deprecated("spinslide: write weighted_sum({w...}, parts...)")]] weighted_sum<Real, Profiles...>
-make_weighted_sum(const std::array<Real, sizeof...(Profiles)>& w, Profiles... parts) {
-  return weighted_sum<Real, Profiles...>(w, std::move(parts)...);
-}
-
 }  // namespace spinslide
 
 #endif  // SPINSLIDE_VALUES_PROFILE_HPP

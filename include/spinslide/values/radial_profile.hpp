@@ -148,17 +148,6 @@ template <class Pressure, class Inner>
 radial_profile(Pressure, Inner)
     -> radial_profile<std::conditional_t<std::is_integral<Inner>::value, double, Inner>, Pressure>;
 
-/// \deprecated Class template argument deduction is the one way to build a
-/// radial_profile, as every other profile (issue 28): radial_profile(p) or
-/// radial_profile(p, inner_ratio); goes in the next release.
-template <class Real = double, class Pressure>
-[[deprecated(
-    "spinslide: write radial_profile(p) or radial_profile(p, inner_ratio)")]] radial_profile<Real,
-                                                                                             Pressure>
-make_radial_profile(Pressure p, Real inner_ratio = 0) {
-  return radial_profile<Real, Pressure>(std::move(p), inner_ratio);
-}
-
 }  // namespace spinslide
 
 #endif  // SPINSLIDE_VALUES_RADIAL_PROFILE_HPP

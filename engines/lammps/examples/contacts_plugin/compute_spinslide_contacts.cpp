@@ -201,7 +201,8 @@ extern "C" void lammpsplugin_init(void* lmp, void* handle, void* regfunc) {
   plugin.version = LAMMPS_VERSION;
   plugin.style = "compute";
   plugin.name = "spinslide/contacts";
-  plugin.info = "Per-contact friction of pair_style granular/spinslide (analysis) v0.1";
+  plugin.info =
+      "Per-contact friction of pair_style granular/spinslide (analysis) v" SPINSLIDE_VERSION;
   plugin.author = "the spinslide developers";
   plugin.creator.v2 = &create_compute;
   plugin.handle = handle;

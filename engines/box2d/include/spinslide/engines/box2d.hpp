@@ -87,11 +87,6 @@ class table_friction {
         .last;
   }
 
-  /// True if body `index`'s last impulse stopped it exactly.
-  [[deprecated("use report(index).sticking")]] bool sticking(std::size_t index) const {
-    return report(index).sticking;
-  }
-
  private:
   struct entry {
     b2Body* body;
