@@ -1,7 +1,7 @@
 //  Copyright (c) 2026 the spinslide developers.
 //  Distributed under the Boost Software License, Version 1.0.
 //
-// The contact law for simulators (contact.hpp).
+// The contact law for simulators (contact_law.hpp).
 #include <gtest/gtest.h>
 
 #include <spinslide/spinslide.hpp>
@@ -263,7 +263,7 @@ TEST(ContactLaw, BadInputIsADomainError) {
 //
 // Each failure a fuzz harness (fuzz/) found in the contact law, with the
 // input it reported; docs/reliability.md lists them.  The expectations are
-// the law as documented (contact.hpp): F = −μN𝓕(ε) v̂ and T = −μN a 𝓣(ε)
+// the law as documented (contact_law.hpp): F = −μN𝓕(ε) v̂ and T = −μN a 𝓣(ε)
 // sign(ω) n̂ with ε = |v_t|/(a|ω_n|), scaled by min(1, ρ/v_s) where ρ =
 // √(|v_t|² + (aω_n)²), evaluated in long double or cpp_bin_float_50.
 

@@ -1,7 +1,7 @@
 //  Copyright (c) 2026 the spinslide developers.
 //  Distributed under the Boost Software License, Version 1.0.
 //
-// Misuse of the contact law (contact.hpp) must not compile: a vector must be
+// Misuse of the contact law (contact_law.hpp) must not compile: a vector must be
 // a class with operator[] or members x, y (, z).  A raw pointer, as MuJoCo's
 // mjtNum* (a typedef of double*), compiled and then wrote through a null
 // "vector" (issue 17).  The radius, the normal force and μ are named by their

@@ -3,7 +3,7 @@
 //  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
 //
 // Reading and writing the components of users' vector types, for the contact
-// law (contact.hpp): operator[] or members x, y, z.
+// law (contact_law.hpp): operator[] or members x, y, z.
 #ifndef SPINSLIDE_CONTACT_DETAIL_VECTOR_ACCESS_HPP
 #define SPINSLIDE_CONTACT_DETAIL_VECTOR_ACCESS_HPP
 

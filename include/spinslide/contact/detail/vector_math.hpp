@@ -2,7 +2,7 @@
 //  Distributed under the Boost Software License, Version 1.0.
 //  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
 //
-// Small 3-vector helpers of the contact law (contact.hpp), each without
+// Small 3-vector helpers of the contact law (contact_law.hpp), each without
 // spurious over- or underflow for any finite input: the largest component,
 // the norm, a·n, the tangential part and the direction.
 #ifndef SPINSLIDE_CONTACT_DETAIL_VECTOR_MATH_HPP
