@@ -66,13 +66,13 @@ inline throws_t simulate(int n_throws, unsigned seed, film_noise noise_sd = trac
     const std::vector<double> t = frame_times(stop.time);
     std::vector<double> t_scaled;
     t_scaled.reserve(t.size());
-    for (const double tk : t) t_scaled.push_back(tk / units.time_scale());
-    const auto motion = spinslide::trajectory(cd, gamma_cd, v0 / units.velocity_scale(),
-                                              w0 / units.spin_scale(), t_scaled);
+    for (const double tk : t) t_scaled.push_back(tk / units.time_unit());
+    const auto motion = spinslide::trajectory(cd, gamma_cd, v0 / units.velocity_unit(),
+                                              w0 / units.spin_unit(), t_scaled);
     std::vector<frame>& frames = out[n];
     for (std::size_t k = 0; k < t.size(); ++k) {
-      const double s = motion[k].distance * units.distance_scale();
-      const double th = motion[k].angle * units.angle_scale();
+      const double s = motion[k].distance * units.distance_unit();
+      const double th = motion[k].angle * units.angle_unit();
       frames.push_back({t[k], s * std::cos(direction) + noise_sd.position * noise(rng),
                         s * std::sin(direction) + noise_sd.position * noise(rng),
                         theta0 + th + noise_sd.angle * noise(rng)});

@@ -45,13 +45,13 @@ inline void film_noise_free(const std::vector<double>& t, double tc, double v, d
   th.assign(t.size(), 0);
   std::vector<double> after;  // dimensionless times after tc
   for (const double ti : t)
-    if (ti > tc) after.push_back((ti - tc) / system.time_scale());
-  const auto ahead = spinslide::trajectory(cd, gamma_cd, v / system.velocity_scale(),
-                                           w / system.spin_scale(), after);
+    if (ti > tc) after.push_back((ti - tc) / system.time_unit());
+  const auto ahead = spinslide::trajectory(cd, gamma_cd, v / system.velocity_unit(),
+                                           w / system.spin_unit(), after);
   for (std::size_t i = 0, j = 0; i < t.size(); ++i) {
     if (t[i] > tc) {
-      s[i] = ahead[j].distance * system.distance_scale();
-      th[i] = ahead[j++].angle * system.angle_scale();
+      s[i] = ahead[j].distance * system.distance_unit();
+      th[i] = ahead[j++].angle * system.angle_unit();
     } else if (t[i] < tc) {
       state x = {v, w, 0, 0};
       auto stepper = odeint::make_controlled(1e-12, 1e-12, odeint::runge_kutta_dopri5<state>());

@@ -150,7 +150,7 @@ stops stop_of(const starts_t& in, const spinslide::tabulated_throw<profile>& tab
 // The dimensionless start of a throw (v0 m/s, ω0 rad/s) on a surface with μ.
 spinslide::throw_start<double> start(double v0, double w0, double mu) {
   const spinslide::si_units<double> u{R, mu, g};
-  return {v0 / u.velocity_scale(), w0 / u.spin_scale()};
+  return {v0 / u.velocity_unit(), w0 / u.spin_unit()};
 }
 
 // The standard deviation of the slope at release of a parabola fitted to the

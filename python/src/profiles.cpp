@@ -307,7 +307,7 @@ void bind_coupling(py::module_& m) {
         },
         py::arg("profile"), py::arg(argument), help);
   };
-  inverse("ratio_at_force", "force",
+  inverse("ratio_from_force", "force",
           "ε(𝓕): the ratio at which the profile's friction force is `force` (0 ≤ force < 1, "
           "else ValueError); array-like.",
           [](const auto& p, double f) { return spinslide::ratio_from_force(p, f); });
@@ -315,7 +315,7 @@ void bind_coupling(py::module_& m) {
           "𝓣(𝓕): the exact limit curve, the largest torque that acts together with friction "
           "force `force` (0 ≤ force < 1); array-like.",
           [](const auto& p, double f) { return spinslide::torque_at_force(p, f); });
-  inverse("ratio_at_torque", "torque",
+  inverse("ratio_from_torque", "torque",
           "ε(𝓣): the ratio at which the profile's friction torque is `torque` "
           "(0 < torque ≤ ⟨r⟩); array-like.",
           [](const auto& p, double t) { return spinslide::ratio_from_torque(p, t); });

@@ -79,7 +79,7 @@ def test_profile_methods_keep_float32_and_shape():
     (lambda: spinslide.simulate_throw_si(spinslide.UniformDisk(), radius=-1.0,
                                          friction_coefficient=0.3, gravity=9.81,
                                          inertia_ratio=0.5, v0=1.0, omega0=1.0), "radius"),
-    (lambda: spinslide.ratio_at_force(spinslide.UniformDisk(), 1.5), "F"),
+    (lambda: spinslide.ratio_from_force(spinslide.UniformDisk(), 1.5), "F"),
     (lambda: spinslide.project_to_limit_set(spinslide.Hertz(), 0.5, 0.5, 0.0), "torque_weight"),
     (lambda: spinslide.project_to_limit_set(spinslide.Hertz(), -0.5, 0.5, 1.0), "force"),
     (lambda: spinslide.trajectory(spinslide.Hertz(), 0.4, 1.0, 1.0, [1.0, 0.5]), "time"),

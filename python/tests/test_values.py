@@ -128,9 +128,9 @@ def test_coupling_round_trips():
         # (ε's condition from 𝓕 grows as 1/(ε𝓕′) ~ 4ε²: ε up to 4 here.)
         eps = np.array([1e-3, 0.3, 1.0, 2.0, 4.0])
         f, t = p.force_torque(eps)
-        assert np.allclose(spinslide.ratio_at_force(p, f), eps, rtol=1e-12)
+        assert np.allclose(spinslide.ratio_from_force(p, f), eps, rtol=1e-12)
         assert np.allclose(spinslide.torque_at_force(p, f), t, rtol=1e-13)
-        assert np.allclose(spinslide.ratio_at_torque(p, t), eps, rtol=1e-12)
+        assert np.allclose(spinslide.ratio_from_torque(p, t), eps, rtol=1e-12)
         assert np.allclose(spinslide.force_at_torque(p, t), f, rtol=1e-13)
     f, t = spinslide.coupling_curve(spinslide.UniformDisk(), points=5)
     assert f[0] == 0 and f[-1] == 1 and t[0] == pytest.approx(2 / 3) and t[-1] == 0

@@ -121,11 +121,11 @@ stop_result<Real> simulate_throw_si(const Profile& profile, disk_radius<Real> ra
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     return {nan, nan, nan, {terminal_regime::sliding_and_spinning, nan}};
   }
-  stop_result<Real> r = simulate_throw(profile, in.gamma, in.v0 / units.velocity_scale(),
-                                       in.omega0 / units.spin_scale());
-  r.time *= units.time_scale();
-  r.distance *= units.distance_scale();
-  r.angle *= units.angle_scale();
+  stop_result<Real> r = simulate_throw(profile, in.gamma, in.v0 / units.velocity_unit(),
+                                       in.omega0 / units.spin_unit());
+  r.time *= units.time_unit();
+  r.distance *= units.distance_unit();
+  r.angle *= units.angle_unit();
   return r;
 }
 

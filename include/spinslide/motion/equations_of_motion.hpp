@@ -95,15 +95,15 @@ struct si_units {
   Real gravity;               ///< g [m/s²]
 
   /// μ√(gR) [m/s per unit v*].
-  Real velocity_scale() const { return friction_coefficient * root(gravity * radius); }
+  Real velocity_unit() const { return friction_coefficient * root(gravity * radius); }
   /// μ√(g/R) [rad/s per unit ω*].
-  Real spin_scale() const { return friction_coefficient * root(gravity / radius); }
+  Real spin_unit() const { return friction_coefficient * root(gravity / radius); }
   /// √(R/g) [s per unit t*].
-  Real time_scale() const { return root(radius / gravity); }
+  Real time_unit() const { return root(radius / gravity); }
   /// μR [m per unit s*].
-  Real distance_scale() const { return friction_coefficient * radius; }
+  Real distance_unit() const { return friction_coefficient * radius; }
   /// μ [rad per unit θ*].
-  Real angle_scale() const { return friction_coefficient; }
+  Real angle_unit() const { return friction_coefficient; }
 
  private:
   static Real root(Real x) {
@@ -135,8 +135,8 @@ class si_motion {
   template <class State, class Time>
   void operator()(const State& x, State& dxdt, Time t) const {
     State xs = x;
-    xs[0] = x[0] / velocity_scale();
-    xs[1] = x[1] / spin_scale();
+    xs[0] = x[0] / velocity_unit();
+    xs[1] = x[1] / spin_unit();
     State d = dxdt;
     scaled_(xs, d, t);
     const Real mu = units_.friction_coefficient, g = units_.gravity;
@@ -149,15 +149,15 @@ class si_motion {
   /// The units: v = v*·μ√(gR), ω = ω*·μ√(g/R), t = t*·√(R/g), s = s*·μR, θ = θ*·μ.
   const si_units<Real>& units() const { return units_; }
   /// μ√(gR) [m/s per unit v*].
-  Real velocity_scale() const { return units_.velocity_scale(); }
+  Real velocity_unit() const { return units_.velocity_unit(); }
   /// μ√(g/R) [rad/s per unit ω*].
-  Real spin_scale() const { return units_.spin_scale(); }
+  Real spin_unit() const { return units_.spin_unit(); }
   /// √(R/g) [s per unit t*].
-  Real time_scale() const { return units_.time_scale(); }
+  Real time_unit() const { return units_.time_unit(); }
   /// μR [m per unit s*].
-  Real distance_scale() const { return units_.distance_scale(); }
+  Real distance_unit() const { return units_.distance_unit(); }
   /// μ [rad per unit θ*].
-  Real angle_scale() const { return units_.angle_scale(); }
+  Real angle_unit() const { return units_.angle_unit(); }
   /// The same motion in the paper's units.
   const dimensionless_motion<Profile>& dimensionless() const { return scaled_; }
 

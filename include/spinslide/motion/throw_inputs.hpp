@@ -29,14 +29,6 @@ struct disk_radius {
   explicit constexpr disk_radius(Real v) : value(v) {}
   Real value;  ///< R
 };
-/// The gravitational acceleration g (m/s², > 0).
-template <class Real>
-struct gravity {
-  using value_type = Real;  ///< the floating type
-  /// Explicit, and not an aggregate: a plain number does not convert.
-  explicit constexpr gravity(Real v) : value(v) {}
-  Real value;  ///< g
-};
 /// The initial speed v0 of a throw (m/s, ≥ 0).
 template <class Real>
 struct initial_speed {

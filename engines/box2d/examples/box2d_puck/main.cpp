@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
   world.CreateJoint(&jd);
 
   // snippet begin
-  spinslide::box2d::table_friction table(spinslide::box2d::gravity{g});
+  spinslide::box2d::table_friction table(spinslide::gravity{g});
   table.couple(
       a, spinslide::pair_friction(spinslide::uniform_disk<>(), spinslide::patch_radius<double>{R},
                                   spinslide::friction_coefficient<double>{mu}));

@@ -177,14 +177,14 @@ run_log run_exact(double gamma, double v0, double w0, double duration) {
   const spinslide::si_units<double> u{coin_radius, mu, g};
   std::vector<double> times;
   const int steps = static_cast<int>(std::ceil(duration / dt));
-  for (int i = 0; i <= steps; ++i) times.push_back(i * dt / u.time_scale());
+  for (int i = 0; i <= steps; ++i) times.push_back(i * dt / u.time_unit());
   const auto samples = spinslide::trajectory(spinslide::uniform_disk<>(), gamma,
-                                             v0 / u.velocity_scale(), w0 / u.spin_scale(), times);
+                                             v0 / u.velocity_unit(), w0 / u.spin_unit(), times);
   run_log log;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     log.t.push_back(static_cast<double>(i) * dt);
-    log.v.push_back(samples[i].speed * u.velocity_scale());
-    log.rw.push_back(coin_radius * samples[i].spin * u.spin_scale());
+    log.v.push_back(samples[i].speed * u.velocity_unit());
+    log.rw.push_back(coin_radius * samples[i].spin * u.spin_unit());
   }
   summarize(log, v0, coin_radius * w0, stop_level);
   log.peak_normal = log.peak_average = 1;
@@ -195,16 +195,16 @@ run_log run_exact(double gamma, double v0, double w0, double duration) {
 // start (sampled on a logarithmic grid of the time left before the stop).
 double exact_ratio_at(double gamma, double v0, double w0, double stop, double fraction) {
   const spinslide::si_units<double> u{coin_radius, mu, g};
-  const double v0s = v0 / u.velocity_scale(), w0s = w0 / u.spin_scale();
-  const double ts = stop / u.time_scale();
+  const double v0s = v0 / u.velocity_unit(), w0s = w0 / u.spin_unit();
+  const double ts = stop / u.time_unit();
   std::vector<double> times;
   // 0.5 % steps of the time left: ε changes by less than 0.2 % per sample.
   for (int k = 0; k <= 5000; ++k) times.push_back(ts * (1 - std::pow(10.0, -k / 500.0)));
   const auto samples = spinslide::trajectory(spinslide::uniform_disk<>(), gamma, v0s, w0s, times);
-  const double start = std::hypot(v0s, w0s * u.spin_scale() * coin_radius / u.velocity_scale());
+  const double start = std::hypot(v0s, w0s * u.spin_unit() * coin_radius / u.velocity_unit());
   for (const auto& m : samples) {
     const double s =
-        std::hypot(m.speed, m.spin * u.spin_scale() * coin_radius / u.velocity_scale());
+        std::hypot(m.speed, m.spin * u.spin_unit() * coin_radius / u.velocity_unit());
     if (m.speed > 0 && m.spin > 0 && s <= fraction * start) return m.ratio;
   }
   return NAN;
@@ -304,7 +304,7 @@ ball_log run_ball(model m) {
 // CSV (gnuplot index `index`), and whether the plug-in passed its checks.
 bool run_throw(const throw_case& c, double gamma, int index, FILE* f) {
   const spinslide::si_units<double> u{coin_radius, mu, g};
-  const double v0 = c.v0s * u.velocity_scale(), w0 = c.w0s * u.spin_scale();
+  const double v0 = c.v0s * u.velocity_unit(), w0 = c.w0s * u.spin_unit();
   const auto exact_stop = spinslide::simulate_throw_si(
       spinslide::uniform_disk<>(), spinslide::disk_radius{coin_radius},
       spinslide::friction_coefficient{mu}, spinslide::gravity{g}, gamma,
@@ -379,8 +379,8 @@ int main(int argc, char** argv) {
       "first 5 steps; >1.05: steps above 1.05 mg; 1ms N: the largest 1 ms average of N/mg; rise: "
       "the highest the centre rose above its rest; after: the largest speeds and the drift of the "
       "centre of mass after both stops\n\n",
-      coin_radius * 1e3, coin_thickness * 1e3, mass * 1e3, gamma, mu, dt, u.velocity_scale(),
-      u.spin_scale(), u.time_scale());
+      coin_radius * 1e3, coin_thickness * 1e3, mass * 1e3, gamma, mu, dt, u.velocity_unit(),
+      u.spin_unit(), u.time_unit());
 
   const std::string csv = out + "/bullet_coin.csv";
   FILE* f = spinslide_examples::open_output(csv, "bullet_coin");

@@ -157,14 +157,14 @@ record exact_record(double gamma, const throw_case& c, const std::vector<double>
   const spinslide::si_units<double> u{mujoco_scene::radius, mujoco_scene::friction,
                                       mujoco_scene::gravity};
   std::vector<double> scaled;
-  for (const double t : times) scaled.push_back(t / u.time_scale());
+  for (const double t : times) scaled.push_back(t / u.time_unit());
   const auto samples =
       spinslide::trajectory(spinslide::uniform_disk<>(), gamma, c.v0s, c.w0s, scaled);
   record r;
   r.time = times;
   for (const auto& s : samples) {
-    r.speed.push_back(s.speed * u.velocity_scale());
-    r.rim.push_back(s.spin * u.spin_scale() * mujoco_scene::radius);
+    r.speed.push_back(s.speed * u.velocity_unit());
+    r.rim.push_back(s.spin * u.spin_unit() * mujoco_scene::radius);
   }
   return r;
 }
@@ -221,7 +221,7 @@ bool compare_throw(const throw_case& c, std::size_t index, double gamma, const o
                    cost_totals& cost) {
   const spinslide::si_units<double> u{mujoco_scene::radius, mujoco_scene::friction,
                                       mujoco_scene::gravity};
-  const double v0 = c.v0s * u.velocity_scale(), w0 = c.w0s * u.spin_scale();
+  const double v0 = c.v0s * u.velocity_unit(), w0 = c.w0s * u.spin_unit();
   const double scale = v0 + mujoco_scene::radius * w0;
   const double stop = spinslide::simulate_throw_si(
                           spinslide::uniform_disk<>(), spinslide::disk_radius{mujoco_scene::radius},

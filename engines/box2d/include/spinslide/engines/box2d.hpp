@@ -6,7 +6,7 @@
 /// spinslide's coupled friction for bodies lying on a table in a top-down
 /// Box2D world (2.4; docs/engines.md, "Box2D").
 ///
-///     spinslide::box2d::table_friction table(spinslide::box2d::gravity{9.81});
+///     spinslide::box2d::table_friction table(spinslide::gravity{9.81});
 ///     table.couple(puck, spinslide::pair_friction(...));
 ///     for (...) { table.apply(dt); world.Step(dt, 8, 3); }
 ///
@@ -28,6 +28,7 @@
 
 #include <box2d/box2d.h>
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/base/named_inputs.hpp>
 #include <spinslide/contact/joint_pairs.hpp>
 #include <spinslide/contact/pair_friction.hpp>
 #include <spinslide/contact/pair_report.hpp>
@@ -43,19 +44,12 @@ namespace box2d {
 /// A body's last step (pair_report.hpp; see the file's comment).
 using pair_report = spinslide::pair_report;
 
-/// The table's gravity g [m/s²] (finite, > 0), which sets the normal force m g.
-struct gravity {
-  /// Explicit: a plain number does not convert.
-  explicit constexpr gravity(double g) : value(g) {}
-  double value;  ///< g
-};
-
 /// The friction of bodies lying on a table, for a top-down Box2D world (see
 /// the file's comment).
 class table_friction {
  public:
   /// A table under gravity g (finite and > 0; otherwise std::domain_error).
-  explicit table_friction(gravity g)
+  explicit table_friction(spinslide::gravity<double> g)
       : gravity_(detail::checked_constructor_argument("spinslide::box2d::table_friction", "gravity",
                                                       g.value,
                                                       detail::argument_rule::finite_positive)) {}
