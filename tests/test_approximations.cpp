@@ -5,8 +5,13 @@
 // what they imply for the end of a throw.
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/motion/dynamics.hpp>
+#include <spinslide/motion/tabulated_throw.hpp>
+#include <spinslide/motion/terminal.hpp>
+#include <spinslide/motion/terminal_state.hpp>
 #include <spinslide/values/approximations.hpp>
+#include <spinslide/values/coupling.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 

@@ -7,7 +7,21 @@
 // function reports through its policy (NaN with errno_on_error and
 // ignore_error; test_policies.cpp has the rest of those).
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/base/detail/checks.hpp>
+#include <spinslide/base/named_inputs.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
+#include <spinslide/contact/contact_law.hpp>
+#include <spinslide/motion/dynamics.hpp>
+#include <spinslide/motion/equations_of_motion.hpp>
+#include <spinslide/motion/tabulated_throw.hpp>
+#include <spinslide/motion/terminal.hpp>
+#include <spinslide/motion/throw_inputs.hpp>
+#include <spinslide/values/approximations.hpp>
+#include <spinslide/values/coupling.hpp>
+#include <spinslide/values/cylinder.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/values/radial_profile.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 #include <gtest/gtest.h>
 

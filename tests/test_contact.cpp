@@ -4,7 +4,11 @@
 // The contact law for simulators (contact_law.hpp).
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
+#include <spinslide/contact/contact_law.hpp>
+#include <spinslide/values/approximations.hpp>
+#include <spinslide/values/disk.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <boost/math/special_functions/relative_difference.hpp>
 

@@ -4,7 +4,8 @@
 // The cylinder on one face with a tilted pressure (cylinder.hpp).
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/values/cylinder.hpp>
+#include <spinslide/values/disk.hpp>
 
 #include <boost/math/special_functions/relative_difference.hpp>
 

@@ -7,7 +7,7 @@
 // code under test.
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/values/disk.hpp>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/ellint_1.hpp>

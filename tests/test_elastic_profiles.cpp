@@ -14,7 +14,7 @@
 // quadrature to 1e-38).
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/next.hpp>

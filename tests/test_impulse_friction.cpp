@@ -13,7 +13,9 @@
 #include <gtest/gtest.h>
 
 #include <spinslide/contact/impulse_friction.hpp>
-#include <spinslide/spinslide.hpp>
+#include <spinslide/motion/dynamics.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 #include <algorithm>
 #include <array>

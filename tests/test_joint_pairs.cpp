@@ -15,7 +15,6 @@
 
 #include <spinslide/contact/impulse_friction.hpp>
 #include <spinslide/contact/joint_pairs.hpp>
-#include <spinslide/spinslide.hpp>
 
 #include <array>
 #include <cmath>

@@ -12,7 +12,14 @@
 // built in a bad state.
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
+#include <spinslide/contact/contact_law.hpp>
+#include <spinslide/motion/dynamics.hpp>
+#include <spinslide/motion/terminal.hpp>
+#include <spinslide/values/coupling.hpp>
+#include <spinslide/values/disk.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 #include <array>
 #include <cerrno>

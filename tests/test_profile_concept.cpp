@@ -8,7 +8,29 @@
 // archetype's law (𝓕 = ε/(1 + ε), 𝓣 = 1/(1 + ε)) gives an answer in closed
 // form, the entry point is run and checked against it.
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/base/named_inputs.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
+#include <spinslide/contact/contact_law.hpp>
+#include <spinslide/contact/planar_metric.hpp>
+#include <spinslide/contact/projection_results.hpp>
+#include <spinslide/contact/spring_friction.hpp>
+#include <spinslide/contact/trial_cap.hpp>
+#include <spinslide/motion/batch_throws.hpp>
+#include <spinslide/motion/dynamics.hpp>
+#include <spinslide/motion/equations_of_motion.hpp>
+#include <spinslide/motion/motion_types.hpp>
+#include <spinslide/motion/tabulated_throw.hpp>
+#include <spinslide/motion/terminal.hpp>
+#include <spinslide/motion/terminal_state.hpp>
+#include <spinslide/motion/throw_inputs.hpp>
+#include <spinslide/values/approximations.hpp>
+#include <spinslide/values/coupling.hpp>
+#include <spinslide/values/cylinder.hpp>
+#include <spinslide/values/force_torque_result.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/values/profile_concept.hpp>
+#include <spinslide/values/radial_profile.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 #include <gtest/gtest.h>
 

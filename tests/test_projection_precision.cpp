@@ -19,7 +19,8 @@
 #include <gtest/gtest.h>
 
 #include <spinslide/contact/limit_set.hpp>
-#include <spinslide/spinslide.hpp>
+#include <spinslide/values/coupling.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 

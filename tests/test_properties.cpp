@@ -6,7 +6,12 @@
 // here to the stated rounding allowance, which each test names.
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
+#include <spinslide/contact/contact_law.hpp>
+#include <spinslide/motion/dynamics.hpp>
+#include <spinslide/motion/tabulated_throw.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 #include <algorithm>
 #include <array>

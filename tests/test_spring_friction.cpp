@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <spinslide/contact/spring_friction.hpp>
-#include <spinslide/spinslide.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <array>
 #include <cmath>

@@ -4,7 +4,7 @@
 // The flow of the ratio ε and the terminal regimes (terminal.hpp).
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/motion/terminal.hpp>
 
 #include <boost/math/special_functions/relative_difference.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>

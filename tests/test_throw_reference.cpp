@@ -10,7 +10,11 @@
 // issue 16 asks of the integrator; the largest errors are printed.
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/motion/dynamics.hpp>
+#include <spinslide/motion/tabulated_throw.hpp>
+#include <spinslide/motion/terminal_state.hpp>
+#include <spinslide/values/profile.hpp>
+#include <spinslide/values/tabulated.hpp>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 

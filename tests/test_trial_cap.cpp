@@ -13,7 +13,12 @@
 
 #include <gtest/gtest.h>
 
-#include <spinslide/spinslide.hpp>
+#include <spinslide/contact/contact_inputs.hpp>
+#include <spinslide/contact/projection_results.hpp>
+#include <spinslide/contact/spring_friction.hpp>
+#include <spinslide/contact/trial_cap.hpp>
+#include <spinslide/values/coupling.hpp>
+#include <spinslide/values/profile.hpp>
 
 #include <array>
 #include <cmath>

@@ -20,7 +20,10 @@
 #      (<spinslide/engines/...>, or an engine's own header such as
 #      <mujoco/mujoco.h>, <btBulletDynamicsCommon.h>, <box2d/...>, <lammps...>);
 #   4. every <spinslide/...> include names a header that exists, and an
-#      umbrella includes only the core.
+#      umbrella includes only the core;
+#   5. each part's umbrella (values.hpp, motion.hpp, contact.hpp) includes
+#      every public header of its part (not detail/), and spinslide.hpp the
+#      three umbrellas, so that <spinslide/spinslide.hpp> gives all of the core.
 # It fails (FATAL_ERROR) naming every violation.  CMake is the one tool that
 # is there wherever the tests run, so the check never skips.
 #
@@ -91,6 +94,26 @@ function(check_borders tree out)
       endif()
     endforeach()
   endforeach()
+  # Rule 5: the umbrellas are complete.
+  set(umbrella_of_values values.hpp)
+  set(umbrella_of_motion motion.hpp)
+  set(umbrella_of_contact contact.hpp)
+  foreach(h IN LISTS headers)
+    if(NOT h MATCHES "^(values|motion|contact)/[^/]+\\.hpp$")
+      continue()
+    endif()
+    set(umbrella "${CMAKE_MATCH_1}.hpp")
+    file(STRINGS "${base}/${umbrella}" lines REGEX "^#include <spinslide/${h}>")
+    if(lines STREQUAL "")
+      list(APPEND violations "rule 5: ${umbrella} does not include <spinslide/${h}>")
+    endif()
+  endforeach()
+  foreach(umbrella IN ITEMS values.hpp motion.hpp contact.hpp)
+    file(STRINGS "${base}/spinslide.hpp" lines REGEX "^#include <spinslide/${umbrella}>")
+    if(lines STREQUAL "")
+      list(APPEND violations "rule 5: spinslide.hpp does not include <spinslide/${umbrella}>")
+    endif()
+  endforeach()
   set(${out} "${violations}" PARENT_SCOPE)
 endfunction()
 
@@ -143,6 +166,19 @@ foreach(plant IN LISTS _plants)
   endif()
   file(REMOVE_RECURSE "${tree}")
 endforeach()
+# A public header that its part's umbrella misses.
+set(tree "${WORK}/plant_umbrella")
+file(REMOVE_RECURSE "${tree}")
+file(COPY "${ROOT}/include" DESTINATION "${tree}")
+file(WRITE "${tree}/include/spinslide/motion/new_part.hpp" "#pragma once\n")
+check_borders("${tree}" violations)
+list(FILTER violations INCLUDE REGEX "^rule 5: motion.hpp does not include <spinslide/motion/new_part.hpp>")
+if(violations STREQUAL "")
+  list(APPEND failures "motion/new_part.hpp, missing from motion.hpp, was not caught by rule 5")
+else()
+  message(STATUS "include_borders self test: caught ${violations}")
+endif()
+file(REMOVE_RECURSE "${tree}")
 # A header outside the parts.
 set(tree "${WORK}/plant_outside")
 file(REMOVE_RECURSE "${tree}")

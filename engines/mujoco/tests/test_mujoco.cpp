@@ -7,7 +7,6 @@
 // rolling; a ball spinning in place under Hertz's pivoting torque).
 #include <gtest/gtest.h>
 #include <spinslide/engines/mujoco.hpp>
-#include <spinslide/spinslide.hpp>
 
 #include "../examples/mujoco_disk/scene.hpp"
 #include "random_throws.hpp"
