@@ -9,7 +9,8 @@
 // its life cycle (the history fix, init_style, init_one's cutoffs and
 // mixing, the per-type arrays).  The force computation is in
 // pair_granular_spinslide_compute.cpp, pair_style/pair_coeff's parsing in
-// pair_granular_spinslide_coeff.cpp.
+// pair_granular_spinslide_coeff.cpp, the restart file's section in
+// pair_granular_spinslide_restart.cpp.
 //
 // For spheres i and j with unit normal n (from j to i), overlap
 // d = r_i + r_j - |x_i - x_j|, R* = r_i r_j/(r_i + r_j) and
@@ -62,7 +63,9 @@ PairGranularSpinslide::PairGranularSpinslide(LAMMPS* lmp) : Pair(lmp) {
   single_enable = 1;
   single_extra = kSingleSize;
   svector = new double[single_extra];
-  restartinfo = 0;
+  // pair_style's settings and pair_coeff's coefficients go into restart
+  // files (pair_granular_spinslide_restart.cpp)
+  restartinfo = 1;
   no_virial_fdotr_compute = 1;
   centroidstressflag = CENTROID_NOTAVAIL;
   finitecutflag = 1;
