@@ -263,8 +263,9 @@ double FixWallGranSpinslide::compute_vector(int n) {
 
 /* ---------------------------------------------------------------------- */
 
+// the per-atom history, with its row pointers (as LAMMPS counts them)
 double FixWallGranSpinslide::memory_usage() {
-  return static_cast<double>(atom->nmax) * kHistSize * sizeof(double);
+  return history == nullptr ? 0.0 : memory->usage(history, atom->nmax, kHistSize);
 }
 
 /* ----------------------------------------------------------------------

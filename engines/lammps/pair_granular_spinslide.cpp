@@ -7,7 +7,7 @@
 //
 // The pair style granular/spinslide (pair_granular_spinslide.h, README.md):
 // its life cycle (the history fix, init_style, init_one's cutoffs and
-// mixing, the per-type arrays).  The force computation is in
+// mixing, the per-type arrays and their memory).  The force computation is in
 // pair_granular_spinslide_compute.cpp, pair_style/pair_coeff's parsing in
 // pair_granular_spinslide_coeff.cpp, the restart file's section in
 // pair_granular_spinslide_restart.cpp.
@@ -278,7 +278,29 @@ void PairGranularSpinslide::reset_dt() { dt = update->dt; }
 
 /* ---------------------------------------------------------------------- */
 
-double PairGranularSpinslide::memory_usage() { return 0.0; }
+/* ----------------------------------------------------------------------
+   the bytes this pair allocated: Pair's per-atom energy and virial arrays;
+   per type pair, (ntypes + 1)^2 each, setflag, cutsq and cutoff_type (with
+   their row pointers, as LAMMPS counts them), the contact laws and the
+   older styles' laws; per type the four radius arrays; the extra
+   quantities of compute pair and single().  (The contact history is the
+   history fix's, which counts it.)
+------------------------------------------------------------------------- */
+
+double PairGranularSpinslide::memory_usage() {
+  double bytes = Pair::memory_usage();
+  bytes += static_cast<double>(nextra + single_extra) * sizeof(double);
+  if (!allocated) return bytes;
+  const int n = atom->ntypes + 1;
+  bytes += memory->usage(setflag, n, n);
+  bytes += memory->usage(cutsq, n, n);
+  bytes += memory->usage(cutoff_type, n, n);
+  bytes += static_cast<double>(laws.capacity()) * sizeof(spinslide_lammps::ContactLaw);
+  bytes += static_cast<double>(legacy_laws.capacity()) * sizeof(spinslide_lammps::LegacyLaw);
+  // onerad_dynamic, onerad_frozen, maxrad_dynamic, maxrad_frozen
+  bytes += 4.0 * n * sizeof(double);
+  return bytes;
+}
 
 /* ---------------------------------------------------------------------- */
 
