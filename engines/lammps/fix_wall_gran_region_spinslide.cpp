@@ -171,9 +171,16 @@ void FixWallGranRegionSpinslide::match_contacts(int i, int nc) {
 
 /* ---------------------------------------------------------------------- */
 
+// the per-atom arrays, with their row pointers (as LAMMPS counts them),
+// and this step's slot per contact
 double FixWallGranRegionSpinslide::memory_usage() {
-  const double nmax = atom->nmax;
-  return nmax * sizeof(int) + nmax * tmax * (sizeof(int) + kHistSize * sizeof(double));
+  const int nmax = atom->nmax;
+  double bytes = static_cast<double>(tmax) * sizeof(int);
+  if (ncontact == nullptr) return bytes;
+  bytes += memory->usage(ncontact, nmax);
+  bytes += memory->usage(walls, nmax, tmax);
+  bytes += memory->usage(history_many, nmax, tmax, kHistSize);
+  return bytes;
 }
 
 /* ----------------------------------------------------------------------

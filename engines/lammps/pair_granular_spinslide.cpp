@@ -5,7 +5,12 @@
 //  The plugin binary built from this file includes LAMMPS headers and runs
 //  inside LAMMPS, which is GPL-2.0: the binary is GPL-2.0 (README.md).
 //
-// The pair style granular/spinslide (pair_granular_spinslide.h, README.md).
+// The pair style granular/spinslide (pair_granular_spinslide.h, README.md):
+// its life cycle (the history fix, init_style, init_one's cutoffs and
+// mixing, the per-type arrays and their memory).  The force computation is in
+// pair_granular_spinslide_compute.cpp, pair_style/pair_coeff's parsing in
+// pair_granular_spinslide_coeff.cpp, the restart file's section in
+// pair_granular_spinslide_restart.cpp.
 //
 // For spheres i and j with unit normal n (from j to i), overlap
 // d = r_i + r_j - |x_i - x_j|, R* = r_i r_j/(r_i + r_j) and
@@ -17,12 +22,12 @@
 // pair_style granular (coupling no, the same arithmetic, step for step).
 // The friction acts at the contact point, r - d/2 from each centre.
 //
-// Per-contact history (FixNeighHistory, kHistSize = 9 values): the
-// tangential spring (3, lab frame), the twisting spring, and where the last
-// slip left the limit curve (eps, F, T, F', F'': the next search's start).
+// Per-contact history (FixNeighHistory, kHistSize = 13 values): the
+// tangential spring (3, lab frame), the twisting spring, where the last
+// slip left the limit curve (eps, F, T, F', F'': the next search's start),
+// whether it slid, and the rolling spring (3).
 
 #include "pair_granular_spinslide.h"
-#include "keywords.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -33,7 +38,6 @@
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
-#include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "update.h"
@@ -42,11 +46,8 @@
 #include "spinslide_contact.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <string>
-#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -54,7 +55,6 @@ using spinslide_lammps::kHistRatio;
 using spinslide_lammps::kHistRoll;
 using spinslide_lammps::kHistShear;
 using spinslide_lammps::kHistSize;
-using spinslide_lammps::kHistSliding;
 using spinslide_lammps::kHistTwist;
 
 /* ---------------------------------------------------------------------- */
@@ -63,7 +63,9 @@ PairGranularSpinslide::PairGranularSpinslide(LAMMPS* lmp) : Pair(lmp) {
   single_enable = 1;
   single_extra = kSingleSize;
   svector = new double[single_extra];
-  restartinfo = 0;
+  // pair_style's settings and pair_coeff's coefficients go into restart
+  // files (pair_granular_spinslide_restart.cpp)
+  restartinfo = 1;
   no_virial_fdotr_compute = 1;
   centroidstressflag = CENTROID_NOTAVAIL;
   finitecutflag = 1;
@@ -121,338 +123,6 @@ PairGranularSpinslide::~PairGranularSpinslide() {
 
 /* ---------------------------------------------------------------------- */
 
-namespace {
-
-const char* const kCoeffSyntax =
-    "pair_coeff I J E eta_n|e nu mu [xgammat x] [damping viscoelastic|tsuji] [limit_damping] "
-    "[cutoff rc], or pair_coeff I J with LAMMPS' pair granular model keywords [cutoff rc]";
-
-// The pair's effective mass m_i m_j/(m_i + m_j), or the other sphere's mass
-// where one is frozen (fix freeze: it does not move).
-double effective_mass(const double* rmass, const int* mask, int freeze_group_bit, int i, int j) {
-  double meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
-  if (mask[i] & freeze_group_bit) meff = rmass[j];
-  if (mask[j] & freeze_group_bit) meff = rmass[i];
-  return meff;
-}
-
-}  // namespace
-
-namespace {
-
-// The statistics of compute pair granular/spinslide over this rank's pairs.
-struct ContactStatistics {
-  double contacts = 0.0, sliding = 0.0, force = 0.0, torque = 0.0;
-  // The contact of i with j.  With newton off, a pair whose j is a ghost is
-  // computed by both owners (or twice, across a periodic boundary): half
-  // each, as LAMMPS' ev_tally weighs it, so that the sums count it once.
-  void add(const spinslide_lammps::ContactForce& cf, int newton_pair, int j, int nlocal) {
-    const double share = newton_pair != 0 || j < nlocal ? 1.0 : 0.5;
-    contacts += share;
-    sliding += cf.capped ? share : 0.0;
-    force += share * std::sqrt(cf.fs[0] * cf.fs[0] + cf.fs[1] * cf.fs[1] + cf.fs[2] * cf.fs[2]);
-    torque += share * std::fabs(cf.mt);
-  }
-};
-
-}  // namespace
-
-void PairGranularSpinslide::compute(int eflag, int vflag) {
-  ev_init(eflag, vflag);
-  for (int k = 0; k < nextra; ++k) pvector[k] = 0.0;
-
-  double** x = atom->x;
-  const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
-  // setup() computes forces without advancing the springs
-  const bool advance = update->setupflag == 0;
-
-  const int inum = list->inum;
-  const int* ilist = list->ilist;
-  const int* numneigh = list->numneigh;
-  int** firstneigh = list->firstneigh;
-  int** firsttouch = fix_history->firstflag;
-  double** firsthistory = fix_history->firstvalue;
-
-  // The statistics (pvector) are only read by `compute pair`, which makes
-  // LAMMPS tally energy on the steps it needs them: gather them only then.
-  const bool tally = eflag_global != 0;
-  ContactStatistics stats;
-
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    const double xi = x[i][0], yi = x[i][1], zi = x[i][2];
-    int* touch = firsttouch[i];
-    double* allhistory = firsthistory[i];
-    const int* jlist = firstneigh[i];
-    const int jnum = numneigh[i];
-
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double delx = xi - x[j][0];
-      const double dely = yi - x[j][1];
-      const double delz = zi - x[j][2];
-      double* history = &allhistory[static_cast<std::ptrdiff_t>(kHistSize) * jj];
-      spinslide_lammps::ContactForce cf;
-      double fij[3];
-      if (!one_pair(i, j, touch[jj], history, advance, cf, fij)) continue;
-      if (tally) stats.add(cf, newton_pair, j, nlocal);
-      if (evflag)
-        ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fij[0], fij[1], fij[2], delx, dely, delz);
-    }
-  }
-  pvector[kExtraContacts] = stats.contacts;
-  pvector[kExtraSliding] = stats.sliding;
-  pvector[kExtraForce] = stats.force;
-  pvector[kExtraTorque] = stats.torque;
-}
-
-/* ----------------------------------------------------------------------
-   i's neighbour j: false if apart (the contact forgotten: touch 0, the
-   history zeroed); else the contact's forces and torques applied (to j as
-   well with newton on or j owned), fij the force on i, cf its friction
-------------------------------------------------------------------------- */
-
-bool PairGranularSpinslide::one_pair(int i, int j, int& touch, double* history, bool advance,
-                                     spinslide_lammps::ContactForce& cf, double fij[3]) {
-  double** x = atom->x;
-  const int itype = atom->type[i], jtype = atom->type[j];
-  const double delx = x[i][0] - x[j][0];
-  const double dely = x[i][1] - x[j][1];
-  const double delz = x[i][2] - x[j][2];
-  const double rsq = delx * delx + dely * dely + delz * delz;
-  const double radi = atom->radius[i], radj = atom->radius[j];
-  const double radsum = radi + radj;
-  const spinslide_lammps::ContactLaw& law = contact_law(itype, jtype);
-  const spinslide_lammps::LegacyLaw& legacy = legacy_of(itype, jtype);
-  const bool is_legacy = legacy.model != spinslide_lammps::LegacyModel::kNone;
-  const bool touching = is_legacy ? rsq < radsum * radsum
-                                  : spinslide_lammps::pair_touching(
-                                        law, rsq, radsum, radi * radj / radsum, touch != 0);
-  if (!touching) {
-    touch = 0;
-    for (int k = 0; k < kHistSize; ++k) history[k] = 0.0;
-    return false;
-  }
-  touch = 1;
-  if (is_legacy) {
-    // LAMMPS' older styles, in their arithmetic
-    cf = legacy_pair(i, j, legacy, history, advance, fij);
-    return true;
-  }
-  const spinslide_lammps::ContactState state = contact_state(i, j, std::sqrt(rsq));
-  spinslide_lammps::contact_force(law, state, history, dt, advance, coupled != 0, error,
-                                  "pair granular/spinslide", cf);
-  apply_forces(i, j, law, state, cf, force->newton_pair != 0 || j < atom->nlocal, fij);
-  return true;
-}
-
-/* ----------------------------------------------------------------------
-   the contact's forces and torques on i (and, if `on_j`, the opposite ones
-   on j), in LAMMPS' pair granular's order: the friction acts at the contact
-   point, r - d/2 from each centre; then the twisting torque about n; then
-   the rolling resistance's torque R* n x F_r.  fij: the force on i.
-------------------------------------------------------------------------- */
-
-void PairGranularSpinslide::apply_forces(int i, int j, const spinslide_lammps::ContactLaw& law,
-                                         const spinslide_lammps::ContactState& state,
-                                         const spinslide_lammps::ContactForce& cf, bool on_j,
-                                         double fij[3]) {
-  double** f = atom->f;
-  double** torque = atom->torque;
-  const double nx = state.n[0], ny = state.n[1], nz = state.n[2];
-  const double* fs = cf.fs;
-  fij[0] = nx * cf.fn + fs[0];
-  fij[1] = ny * cf.fn + fs[1];
-  fij[2] = nz * cf.fn + fs[2];
-  const double tor[3] = {ny * fs[2] - nz * fs[1], nz * fs[0] - nx * fs[2], nx * fs[1] - ny * fs[0]};
-  const double tw[3] = {cf.mt * nx, cf.mt * ny, cf.mt * nz};
-  const double* fr = cf.fr;
-  const double reff = state.reff;
-  const double tr[3] = {reff * (ny * fr[2] - nz * fr[1]), reff * (nz * fr[0] - nx * fr[2]),
-                        reff * (nx * fr[1] - ny * fr[0])};
-  const bool twisting = law.twist != spinslide_lammps::TwistModel::kNone;
-  const double arm_i = atom->radius[i] - 0.5 * state.delta;
-  for (int k = 0; k < 3; ++k) f[i][k] += fij[k];
-  for (int k = 0; k < 3; ++k) torque[i][k] -= arm_i * tor[k];
-  if (twisting)
-    for (int k = 0; k < 3; ++k) torque[i][k] += tw[k];
-  if (law.rolling)
-    for (int k = 0; k < 3; ++k) torque[i][k] += tr[k];
-  if (!on_j) return;
-  const double arm_j = atom->radius[j] - 0.5 * state.delta;
-  for (int k = 0; k < 3; ++k) f[j][k] -= fij[k];
-  for (int k = 0; k < 3; ++k) torque[j][k] -= arm_j * tor[k];
-  if (twisting)
-    for (int k = 0; k < 3; ++k) torque[j][k] -= tw[k];
-  if (law.rolling)
-    for (int k = 0; k < 3; ++k) torque[j][k] -= tr[k];
-}
-
-/* ----------------------------------------------------------------------
-   i's contact with j in one of LAMMPS' older styles (legacy_contact.h), as
-   gran/hooke, gran/hooke/history and gran/hertz/history compute it, the
-   spring in history advanced if `advance`; nothing applied
-------------------------------------------------------------------------- */
-
-spinslide_lammps::LegacyForce PairGranularSpinslide::legacy_contact(
-    int i, int j, const spinslide_lammps::LegacyLaw& legacy, double* history, bool advance) const {
-  double** x = atom->x;
-  double** v = atom->v;
-  double** omega = atom->omega;
-  const double radi = atom->radius[i], radj = atom->radius[j];
-  spinslide_lammps::LegacyContact c{};
-  for (int k = 0; k < 3; ++k) {
-    c.del[k] = x[i][k] - x[j][k];
-    c.vr[k] = v[i][k] - v[j][k];
-    c.wr[k] = radi * omega[i][k] + radj * omega[j][k];
-  }
-  c.rsq = c.del[0] * c.del[0] + c.del[1] * c.del[1] + c.del[2] * c.del[2];
-  c.radsum = radi + radj;
-  c.meff = effective_mass(atom->rmass, atom->mask, freeze_group_bit, i, j);
-  if (legacy.model == spinslide_lammps::LegacyModel::kHertzHistory)
-    c.polyhertz = std::sqrt((c.radsum - std::sqrt(c.rsq)) * radi * radj / c.radsum);
-  return spinslide_lammps::legacy_force(legacy, c, history, dt, advance, false);
-}
-
-/* ----------------------------------------------------------------------
-   the same contact's forces and torques added to i (and j, with newton on
-   or j owned); fij the force on i; the friction in the result, for the
-   statistics
-------------------------------------------------------------------------- */
-
-spinslide_lammps::ContactForce PairGranularSpinslide::legacy_pair(
-    int i, int j, const spinslide_lammps::LegacyLaw& legacy, double* history, bool advance,
-    double fij[3]) {
-  double** f = atom->f;
-  double** torque = atom->torque;
-  const spinslide_lammps::LegacyForce lf = legacy_contact(i, j, legacy, history, advance);
-  history[kHistSliding] = lf.capped ? 1.0 : 0.0;
-  const double radi = atom->radius[i], radj = atom->radius[j];
-  for (int k = 0; k < 3; ++k) {
-    fij[k] = lf.f[k];
-    f[i][k] += lf.f[k];
-    torque[i][k] -= radi * lf.tor[k];
-  }
-  if (force->newton_pair || j < atom->nlocal) {
-    for (int k = 0; k < 3; ++k) {
-      f[j][k] -= lf.f[k];
-      torque[j][k] -= radj * lf.tor[k];
-    }
-  }
-  spinslide_lammps::ContactForce out{};
-  for (int k = 0; k < 3; ++k) out.fs[k] = lf.fs[k];
-  out.capped = lf.capped;
-  return out;
-}
-
-/* ---------------------------------------------------------------------- */
-
-// The geometry and relative motion of i's contact with j at distance r.
-spinslide_lammps::ContactState PairGranularSpinslide::contact_state(int i, int j, double r) const {
-  double** x = atom->x;
-  double** v = atom->v;
-  double** omega = atom->omega;
-  const double radi = atom->radius[i], radj = atom->radius[j];
-  const double radsum = radi + radj;
-  const double rinv = 1.0 / r;
-  spinslide_lammps::ContactState state;
-  for (int k = 0; k < 3; ++k) {
-    state.n[k] = (x[i][k] - x[j][k]) * rinv;
-    state.vr[k] = v[i][k] - v[j][k];
-    state.wr[k] = radi * omega[i][k] + radj * omega[j][k];
-    state.relrot[k] = omega[i][k] - omega[j][k];
-  }
-  state.delta = radsum - r;
-  state.reff = radi * radj / radsum;
-  state.meff = effective_mass(atom->rmass, atom->mask, freeze_group_bit, i, j);
-  state.twist_rate =
-      state.relrot[0] * state.n[0] + state.relrot[1] * state.n[1] + state.relrot[2] * state.n[2];
-  return state;
-}
-
-// The law of the type pair.
-const spinslide_lammps::ContactLaw& PairGranularSpinslide::contact_law(int itype, int jtype) const {
-  return laws[static_cast<std::size_t>(itype) * static_cast<std::size_t>(atom->ntypes + 1) +
-              static_cast<std::size_t>(jtype)];
-}
-
-spinslide_lammps::LegacyLaw& PairGranularSpinslide::legacy_of(int itype, int jtype) {
-  return legacy_laws[static_cast<std::size_t>(itype) * static_cast<std::size_t>(atom->ntypes + 1) +
-                     static_cast<std::size_t>(jtype)];
-}
-
-spinslide_lammps::ContactLaw& PairGranularSpinslide::law_of(int itype, int jtype) {
-  return laws[static_cast<std::size_t>(itype) * static_cast<std::size_t>(atom->ntypes + 1) +
-              static_cast<std::size_t>(jtype)];
-}
-
-/* ----------------------------------------------------------------------
-   One pair for compute pair/local: the force of the last step, from the
-   history as the step left it (not advanced, nothing written back).
-   fforce: the normal force over r (LAMMPS' convention: the force on i along
-   x_i - x_j is fforce (x_i - x_j)); svector (p1 ... p7 of pair/local):
-   the friction force on i (x, y, z), its magnitude, the twisting torque on i
-   about n, the contact's kinematic ratio eps = |v_slip|/(a |w_n|) (inf
-   without spin, 0 at rest), 1 if at the friction limit (sliding) and 1 if in
-   contact (all 0 for a pair apart, so that sums over pairs count contacts).
-------------------------------------------------------------------------- */
-
-double PairGranularSpinslide::single(int i, int j, int itype, int jtype, double rsq,
-                                     double /*factor_coul*/, double /*factor_lj*/, double& fforce) {
-  for (int m = 0; m < single_extra; m++) svector[m] = 0.0;
-  fforce = 0.0;
-  if (fix_history == nullptr || fix_history->firstvalue == nullptr || list == nullptr)
-    error->one(FLERR, "Pair granular/spinslide: single() needs the history of a run");
-  // i's neighbor list holds the pair and its history (compute pair/local
-  // walks that list).
-  const int jnum = list->numneigh[i];
-  const int* jlist = list->firstneigh[i];
-  int jj = 0;
-  while (jj < jnum && (jlist[jj] & NEIGHMASK) != j) ++jj;
-  if (jj == jnum) return 0.0;
-  // in contact as compute() decides (JKR: until the pull-off distance)
-  const spinslide_lammps::ContactLaw& law = contact_law(itype, jtype);
-  const spinslide_lammps::LegacyLaw& legacy = legacy_of(itype, jtype);
-  const bool is_legacy = legacy.model != spinslide_lammps::LegacyModel::kNone;
-  const double radi = atom->radius[i], radj = atom->radius[j];
-  const double radsum = radi + radj;
-  const bool touching =
-      is_legacy ? rsq < radsum * radsum
-                : spinslide_lammps::pair_touching(law, rsq, radsum, radi * radj / radsum,
-                                                  fix_history->firstflag[i][jj] != 0);
-  if (!touching) return 0.0;
-  double history[kHistSize];
-  const double* stored = &fix_history->firstvalue[i][static_cast<std::ptrdiff_t>(kHistSize) * jj];
-  std::copy(stored, stored + kHistSize, history);
-
-  const double r = std::sqrt(rsq);
-  const spinslide_lammps::ContactState state = contact_state(i, j, r);
-  spinslide_lammps::ContactForce cf{};
-  if (is_legacy) {
-    // LAMMPS' older styles, in their arithmetic (the spring not advanced)
-    const spinslide_lammps::LegacyForce lf = legacy_contact(i, j, legacy, history, false);
-    fforce = lf.ccel;
-    for (int k = 0; k < 3; ++k) cf.fs[k] = lf.fs[k];
-  } else {
-    spinslide_lammps::contact_force(law, state, history, dt, false, coupled != 0, error,
-                                    "pair granular/spinslide", cf);
-    fforce = cf.fn / r;
-  }
-  for (int k = 0; k < 3; ++k) svector[k] = cf.fs[k];
-  svector[3] = std::sqrt(cf.fs[0] * cf.fs[0] + cf.fs[1] * cf.fs[1] + cf.fs[2] * cf.fs[2]);
-  svector[4] = cf.mt;
-  svector[5] = spinslide_lammps::slip_ratio(state);
-  // (The force computation of the step rewrote a capped contact's springs
-  // onto the cap, from which the recomputation above may land a rounding
-  // inside it: the step's own verdict is the one kept.)
-  svector[6] = stored[kHistSliding];
-  svector[7] = 1.0;
-  return 0.0;
-}
-
-/* ---------------------------------------------------------------------- */
-
 void PairGranularSpinslide::allocate() {
   allocated = 1;
   const int n = atom->ntypes;
@@ -468,116 +138,6 @@ void PairGranularSpinslide::allocate() {
   onerad_frozen = new double[n + 1];
   maxrad_dynamic = new double[n + 1];
   maxrad_frozen = new double[n + 1];
-}
-
-/* ----------------------------------------------------------------------
-   pair_style granular/spinslide [coupling yes|no] [twist_transfer symmetric|negate]
-------------------------------------------------------------------------- */
-
-void PairGranularSpinslide::settings(int narg, char** arg) {
-  coupled = 1;
-  twist_negate = 0;
-  for (int iarg = 0; iarg < narg; iarg += 2) {
-    if (iarg + 1 >= narg)
-      error->all(FLERR, "Illegal pair_style granular/spinslide command: {} needs a value",
-                 arg[iarg]);
-    const std::string key = arg[iarg], value = arg[iarg + 1];
-    if (key == "coupling") {
-      coupled = spinslide_lammps::either(value, {"yes", "on"}, {"no", "off"});
-      if (coupled < 0)
-        error->all(FLERR, "Illegal pair_style granular/spinslide command: coupling {}", value);
-    } else if (key == "twist_transfer") {
-      twist_negate = spinslide_lammps::either(value, {"negate"}, {"symmetric"});
-      if (twist_negate < 0)
-        error->all(FLERR, "Illegal pair_style granular/spinslide command: twist_transfer {}",
-                   value);
-    } else {
-      error->all(FLERR, "Illegal pair_style granular/spinslide command: unknown keyword {}", key);
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
-   pair_coeff's words after I J: the short form E eta_n|e nu mu [xgammat x]
-   [damping viscoelastic|tsuji] [limit_damping] [cutoff rc], or LAMMPS'
-   pair granular model keywords [cutoff rc]
-------------------------------------------------------------------------- */
-
-spinslide_lammps::ContactLaw PairGranularSpinslide::read_law(int narg, char** arg, double& cutoff) {
-  const std::vector<std::string> words(arg + 2, arg + narg);
-  const bool short_form = utils::is_double(arg[2]);
-  if (short_form && words.size() < 4)
-    error->all(FLERR, "Incorrect args for pair coefficients: {}", kCoeffSyntax);
-  const spinslide_lammps::NumberReader number = [this](const std::string& w) {
-    return utils::numeric(FLERR, w.c_str(), false, lmp);
-  };
-  spinslide_lammps::ContactLaw law;
-  std::vector<std::string> rest;
-  const std::string why = spinslide_lammps::parse_lammps_model(
-      short_form ? spinslide_lammps::expand_short_form(words) : words, number, law, rest);
-  if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}", why);
-  for (std::size_t k = 0; k < rest.size(); ++k) {
-    if (rest[k] == "cutoff" && k + 1 < rest.size()) {
-      cutoff = number(rest[++k]);
-      // (LAMMPS' granular takes cutoff -1 for automatic; here the automatic
-      // cutoff is the default, and a given one must be a distance.)
-      if (!(cutoff > 0.0))
-        error->all(FLERR,
-                   "pair_coeff granular/spinslide: cutoff must be > 0 (leave it out for the "
-                   "automatic cutoff, the contact distance of the largest spheres)");
-      continue;
-    }
-    const std::string why = spinslide_lammps::unsupported_granular_keyword(rest[k]);
-    if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}: {}", rest[k], why);
-    error->all(FLERR, "Incorrect args for pair coefficients: unknown keyword {} ({})", rest[k],
-               kCoeffSyntax);
-  }
-  return law;
-}
-
-void PairGranularSpinslide::coeff(int narg, char** arg) {
-  if (narg < 3) error->all(FLERR, "Incorrect args for pair coefficients: {}", kCoeffSyntax);
-  if (!allocated) allocate();
-
-  int ilo, ihi, jlo, jhi;
-  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
-  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-
-  double cut_one = -1.0;
-  // LAMMPS' older styles (gran/hooke, gran/hooke/history, gran/hertz/history):
-  // in their arithmetic with the coupling off, as their equivalent with
-  // Marshall's twisting spring coupled (legacy_contact.h)
-  spinslide_lammps::LegacyLaw legacy;
-  if (utils::strmatch(arg[2], "^gran/")) {
-    const std::vector<std::string> words(arg + 2, arg + narg);
-    const std::string why = spinslide_lammps::parse_legacy(
-        words,
-        [this](const std::string& w) { return utils::numeric(FLERR, w.c_str(), false, lmp); },
-        force->nktv2p, legacy);
-    if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}", why);
-  }
-  const spinslide_lammps::ContactLaw read = legacy.model != spinslide_lammps::LegacyModel::kNone
-                                                ? spinslide_lammps::modern_equivalent(legacy)
-                                                : read_law(narg, arg, cut_one);
-  if (coupled) legacy.model = spinslide_lammps::LegacyModel::kNone;
-  const std::string why = spinslide_lammps::check_law(read);
-  if (!why.empty()) error->all(FLERR, "pair_coeff granular/spinslide: {}", why);
-  const spinslide_lammps::ContactLaw law =
-      spinslide_lammps::resolve(read, spinslide_lammps::Moduli::kExact, false);
-  // JKR: contacts last beyond touching, until the pull-off distance
-  if (law.normal == spinslide_lammps::NormalModel::kJkr) beyond_contact = 1;
-
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++) {
-    for (int j = std::max(jlo, i); j <= jhi; j++) {
-      law_of(i, j) = law_of(j, i) = law;
-      legacy_of(i, j) = legacy_of(j, i) = legacy;
-      cutoff_type[i][j] = cutoff_type[j][i] = cut_one;
-      setflag[i][j] = 1;
-      count++;
-    }
-  }
-  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -718,7 +278,29 @@ void PairGranularSpinslide::reset_dt() { dt = update->dt; }
 
 /* ---------------------------------------------------------------------- */
 
-double PairGranularSpinslide::memory_usage() { return 0.0; }
+/* ----------------------------------------------------------------------
+   the bytes this pair allocated: Pair's per-atom energy and virial arrays;
+   per type pair, (ntypes + 1)^2 each, setflag, cutsq and cutoff_type (with
+   their row pointers, as LAMMPS counts them), the contact laws and the
+   older styles' laws; per type the four radius arrays; the extra
+   quantities of compute pair and single().  (The contact history is the
+   history fix's, which counts it.)
+------------------------------------------------------------------------- */
+
+double PairGranularSpinslide::memory_usage() {
+  double bytes = Pair::memory_usage();
+  bytes += static_cast<double>(nextra + single_extra) * sizeof(double);
+  if (!allocated) return bytes;
+  const int n = atom->ntypes + 1;
+  bytes += memory->usage(setflag, n, n);
+  bytes += memory->usage(cutsq, n, n);
+  bytes += memory->usage(cutoff_type, n, n);
+  bytes += static_cast<double>(laws.capacity()) * sizeof(spinslide_lammps::ContactLaw);
+  bytes += static_cast<double>(legacy_laws.capacity()) * sizeof(spinslide_lammps::LegacyLaw);
+  // onerad_dynamic, onerad_frozen, maxrad_dynamic, maxrad_frozen
+  bytes += 4.0 * n * sizeof(double);
+  return bytes;
+}
 
 /* ---------------------------------------------------------------------- */
 

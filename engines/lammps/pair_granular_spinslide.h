@@ -17,6 +17,10 @@
 ///              [cutoff rc]
 ///   pair_coeff I J <LAMMPS pair granular model keywords> [cutoff rc]
 ///
+/// Restart files carry the settings and every type pair's coefficients
+/// (pair_granular_spinslide_restart.cpp, law_record.h): read_restart
+/// restores the pair without pair_style or pair_coeff.
+///
 /// engines/lammps/README.md documents the models and the syntax.
 
 #ifndef SPINSLIDE_LAMMPS_PAIR_GRANULAR_SPINSLIDE_H
@@ -26,6 +30,7 @@
 #include "pair.h"
 #include "spinslide_contact.h"
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -39,6 +44,10 @@ class PairGranularSpinslide : public Pair {
   void settings(int, char**) override;
   void coeff(int, char**) override;
   void init_style() override;
+  void write_restart(FILE*) override;
+  void read_restart(FILE*) override;
+  void write_restart_settings(FILE*) override;
+  void read_restart_settings(FILE*) override;
   double init_one(int, int) override;
   void reset_dt() override;
   double memory_usage() override;
@@ -59,6 +68,7 @@ class PairGranularSpinslide : public Pair {
 
  protected:
   void allocate();
+  void read_type_pair(FILE* fp, int i, int j);
   spinslide_lammps::ContactLaw read_law(int narg, char** arg, double& cutoff);
   spinslide_lammps::ContactState contact_state(int i, int j, double r) const;
   void apply_forces(int i, int j, const spinslide_lammps::ContactLaw& law,

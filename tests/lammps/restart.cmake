@@ -6,10 +6,15 @@
 # first half again with LAMMPS' own granular styles: the reading log must
 # carry granular/spinslide's warning that the file holds none of its history.
 #   cmake -DLMP=... -DPLUGIN=... -DINPUT=... -DCOMPARE=... -DDIR=...
-#         [-DNP=2 -DMPIEXEC=mpirun] [-DCOUPLING=yes] [-DWALL=drum] -P restart.cmake
+#         [-DNP=2 -DMPIEXEC=mpirun] [-DCOUPLING=yes] [-DWALL=drum]
+#         [-DCOEFFS=restart] [-DMODEL=short|keywords|legacy] -P restart.cmake
 # WALL=drum: the spheres in a turning drum (fix wall/gran/region/spinslide);
 # the reading log must also say that the wall's contacts and the region's
 # motion were restored (no run with LAMMPS' own styles then).
+# COEFFS=restart: the reading input gives no pair_style and no pair_coeff
+# (in.restart -var coeffs restart): the pair, its settings and coefficients
+# come from the restart file, and the reading log must say so.  MODEL: the
+# coefficients (in.restart -var model).  Neither with LAMMPS' own styles.
 include("${CMAKE_CURRENT_LIST_DIR}/lammps_run.cmake")
 foreach(var LMP PLUGIN INPUT COMPARE DIR)
   if(NOT DEFINED ${var})
@@ -22,13 +27,20 @@ endif()
 if(NOT DEFINED WALL)
   set(WALL plane)
 endif()
+if(NOT DEFINED COEFFS)
+  set(COEFFS input)
+endif()
+if(NOT DEFINED MODEL)
+  set(MODEL short)
+endif()
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
 lammps_launcher(launcher)
 function(lammps phase out)
   execute_process(
     COMMAND ${launcher} "${LMP}" -in "${INPUT}" -var phase ${phase} -var plugin "${PLUGIN}"
-            -var coupling ${COUPLING} -var wall ${WALL} -var out ${out} ${ARGN} -log "log.${out}.${phase}"
+            -var coupling ${COUPLING} -var wall ${WALL} -var coeffs ${COEFFS} -var model ${MODEL}
+            -var out ${out} ${ARGN} -log "log.${out}.${phase}"
             -screen none
     WORKING_DIRECTORY "${DIR}" RESULT_VARIABLE ran)
   if(NOT ran EQUAL 0)
@@ -50,6 +62,14 @@ endif()
 if(log MATCHES "Unused restart file")
   message(FATAL_ERROR "restart.cmake: restart info left unused (${DIR}/log.halves.read)")
 endif()
+if(COEFFS STREQUAL "restart")
+  if(NOT log MATCHES "restoring pair style granular/spinslide from restart\n")
+    message(FATAL_ERROR "restart.cmake: the pair was not restored from the restart file (${DIR}/log.halves.read)")
+  endif()
+  if(log MATCHES "WARNING")
+    message(FATAL_ERROR "restart.cmake: the restarted run warns (${DIR}/log.halves.read)")
+  endif()
+endif()
 if(WALL STREQUAL "drum")
   foreach(kind IN ITEMS peratom global)
     if(NOT log MATCHES "Resetting ${kind} fix info from restart file:\n  fix style: wall/gran/region/spinslide, fix ID: wall\n")
@@ -60,6 +80,10 @@ if(WALL STREQUAL "drum")
     message(FATAL_ERROR "restart.cmake: the restarted drum warns (${DIR}/log.halves.read)")
   endif()
   message(STATUS "restart.cmake: the restarted drum equals the whole run bit for bit")
+  return()
+endif()
+if(NOT COEFFS STREQUAL "input" OR NOT MODEL STREQUAL "short")
+  message(STATUS "restart.cmake: the restarted run (${MODEL}, coefficients from the ${COEFFS}) equals the whole one bit for bit")
   return()
 endif()
 lammps(write stock -var writer stock)
