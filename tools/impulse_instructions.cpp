@@ -9,9 +9,9 @@
 // MODE 0 (sliding, from the answer's ratio times 1 + 1e-3), 1 (sliding,
 // cold) or 2 (sticking: a normal impulse of 1e3).  START is the warm
 // start's type (curve_point<double>, or starting_ratio<double> for headers
-// older than issue 26's second session).
+// older than issue 26's second session).  It includes the umbrella, the one
+// header every commit has (the headers moved into folders in issue 40).
 
-#include <spinslide/contact/impulse_friction.hpp>
 #include <spinslide/spinslide.hpp>
 
 #include <array>
