@@ -1,7 +1,7 @@
 //  Copyright (c) 2026 the spinslide developers.
 //  Distributed under the Boost Software License, Version 1.0.
 //
-// The Bullet world of examples/bullet_coin, tests/engines/test_bullet.cpp and
+// The Bullet world of examples/bullet_coin, tests/engines/test_bullet*.cpp and
 // benchmarks/bench_bullet.cpp (Bullet 3, double precision): a
 // btDiscreteDynamicsWorld with Bullet's own solver or
 // spinslide::bullet::coupled_friction_solver, a static box table whose top
