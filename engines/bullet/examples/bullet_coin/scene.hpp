@@ -1,10 +1,9 @@
 //  Copyright (c) 2026 the spinslide developers.
 //  Distributed under the Boost Software License, Version 1.0.
 //
-// The Bullet world of engines/bullet/examples/bullet_coin, engines/bullet/tests/test_bullet.cpp and
-// benchmarks/bench_bullet.cpp (Bullet 3, double precision): a
-// btDiscreteDynamicsWorld with Bullet's own solver or
-// spinslide::bullet::coupled_friction_solver, a static box table whose top
+// The Bullet world of engines/bullet/examples/bullet_coin, engines/bullet/tests/test_bullet*.cpp
+// and benchmarks/bench_bullet.cpp (Bullet 3, double precision): a btDiscreteDynamicsWorld with
+// Bullet's own solver or spinslide::bullet::coupled_friction_solver, a static box table whose top
 // face is z = 0, and the coin they share: R = 12 mm, 2 mm thick, on wood
 // (μ = 0.3).
 #ifndef SPINSLIDE_EXAMPLES_BULLET_SCENE_HPP
