@@ -17,9 +17,9 @@
 namespace {
 
 using spinslide::friction_coefficient;
+using spinslide::gravity;
 using spinslide::pair_friction;
 using spinslide::patch_radius;
-using spinslide::gravity;
 using spinslide::box2d::table_friction;
 
 constexpr double radius = 0.05, mass = 0.016, mu = 0.3, g = 9.81, dt = 1e-3;

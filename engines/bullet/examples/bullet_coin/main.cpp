@@ -203,8 +203,7 @@ double exact_ratio_at(double gamma, double v0, double w0, double stop, double fr
   const auto samples = spinslide::trajectory(spinslide::uniform_disk<>(), gamma, v0s, w0s, times);
   const double start = std::hypot(v0s, w0s * u.spin_unit() * coin_radius / u.velocity_unit());
   for (const auto& m : samples) {
-    const double s =
-        std::hypot(m.speed, m.spin * u.spin_unit() * coin_radius / u.velocity_unit());
+    const double s = std::hypot(m.speed, m.spin * u.spin_unit() * coin_radius / u.velocity_unit());
     if (m.speed > 0 && m.spin > 0 && s <= fraction * start) return m.ratio;
   }
   return NAN;
