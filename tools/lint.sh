@@ -87,7 +87,7 @@ done
 echo "lint: clang-format: ${#sources[@]} files ($listed_by) checked, ${#unformatted[@]} unformatted ($((SECONDS - start)) s)"
 
 # ---------------------------------------------------------------- source length
-# No hand-written source above 500 lines (docs/architecture.md, rule 6):
+# No hand-written source above 500 lines (docs/architecture.md, "The rules", 5):
 # every tracked *.hpp, *.h, *.cpp and *.py, wherever it lives (the library,
 # its tests, benchmarks, reference generators, tools, the Python package,
 # examples and the engines' adapters and plugins alike; issue 40).  A
