@@ -420,14 +420,14 @@ int main(int argc, char** argv) {
       "// The piecewise polynomials of g(y), t1(y), t2(y) used by disk_fast.hpp\n"
       "// (docs/theory.md §4, \"The fast path\").\n"
       "// clang-format off\n"
-      "#ifndef SPINSLIDE_DETAIL_DISK_TABLES_HPP\n"
-      "#define SPINSLIDE_DETAIL_DISK_TABLES_HPP\n\n"
+      "#ifndef SPINSLIDE_VALUES_DETAIL_DISK_TABLES_HPP\n"
+      "#define SPINSLIDE_VALUES_DETAIL_DISK_TABLES_HPP\n\n"
       "namespace spinslide {\nnamespace detail {\n");
   emit(D, "disk_table_double", td, rd);
   emit(F, "disk_table_float", tf, rf);
   emit_global(global);
   std::printf(
       "\n}  // namespace detail\n}  // namespace spinslide\n\n"
-      "#endif  // SPINSLIDE_DETAIL_DISK_TABLES_HPP\n// clang-format on\n");
+      "#endif  // SPINSLIDE_VALUES_DETAIL_DISK_TABLES_HPP\n// clang-format on\n");
   return 0;
 }

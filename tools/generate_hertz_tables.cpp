@@ -232,12 +232,12 @@ int main(int argc, char** argv) {
       "// (docs/theory.md §6, \"Hertz's fast path\"): coefficient k of A(f + 1) of\n"
       "// piece i at i * stride + 4k + f.\n"
       "// clang-format off\n"
-      "#ifndef SPINSLIDE_DETAIL_HERTZ_TABLES_HPP\n"
-      "#define SPINSLIDE_DETAIL_HERTZ_TABLES_HPP\n\n"
+      "#ifndef SPINSLIDE_VALUES_DETAIL_HERTZ_TABLES_HPP\n"
+      "#define SPINSLIDE_VALUES_DETAIL_HERTZ_TABLES_HPP\n\n"
       "namespace spinslide {\nnamespace detail {\n");
   emit(table, pieces, degree, r);
   std::printf(
       "\n}  // namespace detail\n}  // namespace spinslide\n\n"
-      "#endif  // SPINSLIDE_DETAIL_HERTZ_TABLES_HPP\n// clang-format on\n");
+      "#endif  // SPINSLIDE_VALUES_DETAIL_HERTZ_TABLES_HPP\n// clang-format on\n");
   return 0;
 }

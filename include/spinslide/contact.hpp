@@ -7,7 +7,7 @@
 /// projection, the impulse, spring-history and trial-cap laws, one coupled
 /// pair (`pair_friction`), the joint solve of many pairs and the adapters'
 /// reports (include/spinslide/contact/).  Includes the values it builds on.
-/// The engine adapters are not here: engines/<engine>/ (docs/engines.md).
+/// The engine adapters are not here: engines/\<engine\>/ (docs/engines.md).
 
 #ifndef SPINSLIDE_CONTACT_HPP
 #define SPINSLIDE_CONTACT_HPP

@@ -5,7 +5,7 @@
 /// \file spinslide.hpp
 /// Umbrella header: includes every public spinslide header of the core, through
 /// the umbrellas of its three parts (values.hpp, motion.hpp, contact.hpp).
-/// The engine adapters are not in it (engines/<engine>/, docs/engines.md).
+/// The engine adapters are not in it (engines/\<engine\>/, docs/engines.md).
 
 #ifndef SPINSLIDE_SPINSLIDE_HPP
 #define SPINSLIDE_SPINSLIDE_HPP
