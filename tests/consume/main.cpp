@@ -50,7 +50,7 @@ void check_engines() {
 #ifdef SPINSLIDE_CONSUME_BOX2D
   bool refused_gravity = false;
   try {
-    spinslide::box2d::table_friction table(spinslide::gravity{-1});
+    spinslide::box2d::table_friction table(spinslide::gravity{-1.0});
   } catch (const std::domain_error&) {
     refused_gravity = true;
   }
