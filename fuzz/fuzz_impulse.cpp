@@ -111,23 +111,22 @@ double distance(const matrix& m, const std::array<double, 3>& a, const std::arra
 
 template <class P>
 void check_projection(const P& p, const matrix& m, const std::array<double, 3>& z,
-                      const spinslide::wrench_projection<double>& r) {
+                      const spinslide::friction_result<std::array<double, 2>, double>& r) {
   const char* call = "project_to_limit_set(planar_metric)";
   if (r.sticking) {
-    check(r.point.force_x == z[0] && r.point.force_y == z[1] && r.point.torque == z[2], call,
-          "sticking but moved");
+    check(r.force[0] == z[0] && r.force[1] == z[1] && r.torque == z[2], call, "sticking but moved");
     return;
   }
   check(r.ratio >= 0, call, "ratio < 0 or NaN");
   const auto c = p.force_torque(r.ratio);
-  const double f = std::hypot(r.point.force_x, r.point.force_y);
+  const double f = std::hypot(r.force[0], r.force[1]);
   check(std::fabs(f - c.force) <= 1e-12 * (1 + c.force), call, "force off the curve");
-  check(std::fabs(std::fabs(r.point.torque) - c.torque) <= 1e-12 * (1 + c.torque), call,
+  check(std::fabs(std::fabs(r.torque) - c.torque) <= 1e-12 * (1 + c.torque), call,
         "torque off the curve");
   // No farther than the curve's ends along z's direction and torque sign.
   const auto [dx, dy] = unit_direction(z[0], z[1]);
   const double top = std::copysign(p.mean_radius(), z[2]);
-  const std::array<double, 3> here{r.point.force_x, r.point.force_y, r.point.torque};
+  const std::array<double, 3> here{r.force[0], r.force[1], r.torque};
   const double d = distance(m, here, z);
   if (!std::isfinite(d)) return;
   const double slack = 1e-9 * d + 1e-12 * distance(m, {0, 0, 0}, z);
@@ -152,7 +151,7 @@ void fuzz_projection(fuzz_input& in, const P& p) {
                        : moderate ? validity::valid
                                   : validity::ambiguous;
     expect(v, "project_to_limit_set(planar_metric)", [&] {
-      spinslide::wrench_projection<double> r{};
+      spinslide::friction_result<std::array<double, 2>, double> r{};
       if (!converges(p, [&] {
             r = spinslide::project_to_limit_set(
                 p, spinslide::tangent_wrench<double>{z[0], z[1], z[2]}, metric);
@@ -224,7 +223,7 @@ void fuzz_impulse_law(fuzz_input& in, const P& p) {
                                                spinslide::friction_coefficient<double>{mu}};
     const validity v = !ok ? validity::invalid : scales ? validity::valid : validity::ambiguous;
     expect(v, "impulse_friction", [&] {
-      spinslide::friction_result<std::array<double, 2>, double> r{};
+      spinslide::impulse_result<std::array<double, 2>, double> r{};
       if (!converges(p, [&] {
             r = spinslide::impulse_friction(p, std::array<double, 2>{vx, vy}, spin, inverse_mass,
                                             c);

@@ -43,7 +43,8 @@ double rounding_allowance(const query& q, double d, double top) {
 
 // The result is no farther than the corners and the curve beside it.
 template <class P>
-void check_nearest(const P& p, const query& q, const spinslide::limit_projection<double>& r) {
+void check_nearest(const P& p, const query& q,
+                   const spinslide::friction_result<double, double>& r) {
   const double d = squared(q, r.force, r.torque);
   if (!std::isfinite(d)) return;  // a point near the largest value: distances overflow
   const double slack = 1 + 1e-9, allow = rounding_allowance(q, d, p.mean_radius());
@@ -73,8 +74,8 @@ void check_inside(const P& p, const query& q, bool caps) {
 }
 
 template <class P>
-void check_projection(const P& p, const query& q, const spinslide::limit_projection<double>& r,
-                      bool caps) {
+void check_projection(const P& p, const query& q,
+                      const spinslide::friction_result<double, double>& r, bool caps) {
   if (r.sticking) {
     check(r.force == q.x && r.torque == q.y, "project_to_limit_set", "sticking but moved");
     check(std::isnan(r.ratio), "project_to_limit_set", "sticking with a ratio");
@@ -105,7 +106,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     describe("start", start);
     const validity v = valid_if(q.x >= 0 && std::isfinite(q.x) && q.y >= 0 && std::isfinite(q.y) &&
                                 q.w > 0 && std::isfinite(q.w));
-    spinslide::limit_projection<double> cold{};
+    spinslide::friction_result<double, double> cold{};
     const bool ran = expect(v, "project_to_limit_set", [&] {
       cold = spinslide::project_to_limit_set(p, q.x, q.y, q.w);
       check_projection(p, q, cold, caps);

@@ -83,20 +83,20 @@ void fuzz_projection(fuzz_input& in, const P& p) {
           p, spinslide::tangent_wrench<Real>{z[0], z[1], z[2]}, metric);
       const char* call = "project_to_limit_set(planar_metric)";
       if (r.sticking) {
-        check(r.point.force_x == z[0] && r.point.force_y == z[1] && r.point.torque == z[2], call,
+        check(r.force[0] == z[0] && r.force[1] == z[1] && r.torque == z[2], call,
               "sticking but moved");
         return;
       }
       check(r.ratio >= 0, call, "ratio < 0 or NaN");
       const Real eps = std::numeric_limits<Real>::epsilon();
       const auto c = p.force_torque(r.ratio);
-      const Real f = std::hypot(r.point.force_x, r.point.force_y);
+      const Real f = std::hypot(r.force[0], r.force[1]);
       check(std::fabs(f - c.force) <= 8 * eps * (1 + c.force), call, "force off the curve");
-      check(std::fabs(std::fabs(r.point.torque) - c.torque) <= 8 * eps * (1 + c.torque), call,
+      check(std::fabs(std::fabs(r.torque) - c.torque) <= 8 * eps * (1 + c.torque), call,
             "torque off the curve");
       const auto [dx, dy] = unit_direction(z[0], z[1]);
       const Real top = std::copysign(p.mean_radius(), z[2]);
-      const std::array<Real, 3> here{r.point.force_x, r.point.force_y, r.point.torque};
+      const std::array<Real, 3> here{r.force[0], r.force[1], r.torque};
       const Real d = distance(metric.entries(), here, z);
       if (!std::isfinite(d)) return;
       const Real slack = Real(1e-3) * d + 64 * eps * distance(metric.entries(), {0, 0, 0}, z) +

@@ -147,6 +147,31 @@ TEST(ContactLaw, HertzProfileForSphereContacts) {
   EXPECT_LE(relative_difference(-r.torque, 0.3 * a * hertz<>().torque(eps)), 1e-15);
 }
 
+// The law's result is a friction_result (issue 40): its ratio is the
+// motion's ε = |v|/(a|ω|) (+∞ sliding, 0 spinning, NaN at rest), and
+// curve() the limit curve's point there, (ε, 𝓕(ε), 𝓣(ε)), in 2-D as in 3-D.
+TEST(ContactLaw, ReportsTheMotionsRatioAndCurvePoint) {
+  const contact_law<hertz<>> law(hertz<>(), velocity_scale<double>{1e-6});
+  const double a = 0.02;
+  const auto planar = law(vec2{0.003, -0.004}, -2.0, contact_of(a, 1.0, 0.3));
+  const double eps = 0.005 / (a * 2.0);
+  EXPECT_FALSE(planar.sticking);
+  EXPECT_EQ(planar.ratio, eps);
+  EXPECT_EQ(planar.curve().ratio, eps);
+  EXPECT_EQ(planar.curve().force, hertz<>().force(eps));
+  EXPECT_EQ(planar.curve().torque, hertz<>().torque(eps));
+  const auto spatial = law(vec3{0.003, -0.004, 0.0}, vec3{0.0, 0.0, -2.0},
+                           contact_normal<vec3>{vec3{0.0, 0.0, 1.0}}, contact_of(a, 1.0, 0.3));
+  EXPECT_EQ(spatial.ratio, eps);
+  EXPECT_EQ(spatial.curve().force, planar.curve().force);
+  EXPECT_EQ(law(vec2{1.0, 0.0}, 0.0, contact_of(a, 1.0, 0.3)).ratio,
+            std::numeric_limits<double>::infinity());
+  const auto spinning = law(vec2{0.0, 0.0}, 3.0, contact_of(a, 1.0, 0.3));
+  EXPECT_EQ(spinning.ratio, 0.0);
+  EXPECT_EQ(spinning.curve().torque, hertz<>().mean_radius());
+  EXPECT_TRUE(std::isnan(law(vec2{0.0, 0.0}, 0.0, contact_of(a, 1.0, 0.3)).ratio));
+}
+
 TEST(Regularization, ExactAboveTheScaleContinuousAndZeroAtRest) {
   const double vs = 1e-3;
   const contact_law<> law(uniform_disk<>(), velocity_scale<double>{vs});

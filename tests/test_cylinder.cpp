@@ -33,10 +33,10 @@ TEST(TiltIntegrals, IdentityWithTheTorqueAndValuesAtZero) {
 TEST(TiltedCylinder, ZeroHeightIsTheFlatDisk) {
   for (double e : {0.0, 0.2, 1.0, 5.0}) {
     const auto c = tilted_cylinder_friction(e, 0.0, 0.05, 0.3);
-    EXPECT_EQ(c.along, -force(e));
-    EXPECT_EQ(c.sideways, 0.0);
+    EXPECT_EQ(c.force[0], -force(e));
+    EXPECT_EQ(c.force[1], 0.0);
     EXPECT_EQ(c.torque, -torque(e));
-    EXPECT_EQ(c.centre_forward, 0.0);
+    EXPECT_EQ(c.centre[0], 0.0);
     EXPECT_EQ(c.contact, cylinder_contact::full);
   }
 }
@@ -51,13 +51,13 @@ TEST(TiltedCylinder, MomentBalanceAndSidewaysForce) {
     const auto c = tilted_cylinder_friction(e, h, R, mu);
     const auto I = tilted_pressure_integrals(e);
     EXPECT_EQ(c.contact, cylinder_contact::full);
-    EXPECT_GT(c.centre_forward, 0);
-    EXPECT_GT(c.sideways, prev);
-    prev = c.sideways;
+    EXPECT_GT(c.centre[0], 0);
+    EXPECT_GT(c.force[1], prev);
+    prev = c.force[1];
     // α = κ(−F_along), β = κ F_sideways: ∫x p = −h F_x, ∫y' p = −h F_y'.
-    EXPECT_NEAR(4 * c.centre_forward, -kappa * c.along, 1e-14);
-    EXPECT_NEAR(4 * c.centre_sideways, kappa * c.sideways, 1e-14);
-    EXPECT_NEAR(c.sideways, 4 * c.centre_forward * I.B, 1e-15);
+    EXPECT_NEAR(4 * c.centre[0], -kappa * c.force[0], 1e-14);
+    EXPECT_NEAR(4 * c.centre[1], kappa * c.force[1], 1e-14);
+    EXPECT_NEAR(c.force[1], 4 * c.centre[0] * I.B, 1e-15);
   }
 }
 
@@ -83,8 +83,8 @@ TEST(TruncatedPressure, MatchesTheAreaIntegralsIn50Digits) {
     const double eps = std::stod(r[0]), theta = std::stod(r[1]), phi = std::stod(r[2]);
     const auto f = truncated_pressure_friction(eps, theta, phi);
     EXPECT_NEAR(f.centre, std::stod(r[4]), 1e-13) << eps << " " << theta;
-    EXPECT_NEAR(f.force_x, std::stod(r[5]), 1e-12) << eps << " " << theta;
-    EXPECT_NEAR(f.force_y, std::stod(r[6]), 1e-12) << eps << " " << theta;
+    EXPECT_NEAR(f.force[0], std::stod(r[5]), 1e-12) << eps << " " << theta;
+    EXPECT_NEAR(f.force[1], std::stod(r[6]), 1e-12) << eps << " " << theta;
     EXPECT_NEAR(f.torque, std::stod(r[7]), 1e-12) << eps << " " << theta;
   }
 }
@@ -98,8 +98,8 @@ TEST(TruncatedPressure, WholeFaceIsTheLinearTilt) {
       const auto I = tilted_pressure_integrals(e);
       const auto f = truncated_pressure_friction(e, pi, phi);
       const double a = std::cos(phi), b = std::sin(phi);
-      EXPECT_NEAR(f.force_x, -(force(e) + b * I.A), 1e-12) << e << " " << phi;
-      EXPECT_NEAR(f.force_y, -a * I.B, 1e-12) << e << " " << phi;
+      EXPECT_NEAR(f.force[0], -(force(e) + b * I.A), 1e-12) << e << " " << phi;
+      EXPECT_NEAR(f.force[1], -a * I.B, 1e-12) << e << " " << phi;
       EXPECT_NEAR(f.torque, -(torque(e) + b * I.C), 1e-12) << e << " " << phi;
       EXPECT_NEAR(f.centre, 0.25, 1e-14);
     }
@@ -116,9 +116,9 @@ TEST(TiltedCylinder, PartialContactBalancesTheMoment) {
         EXPECT_EQ(c.contact, cylinder_contact::tipped);
         continue;
       }
-      const double r = std::hypot(c.centre_forward, c.centre_sideways);
-      EXPECT_NEAR(c.centre_forward, -lambda * c.along, 1e-9) << e << " " << lambda;
-      EXPECT_NEAR(c.centre_sideways, lambda * c.sideways, 1e-9) << e << " " << lambda;
+      const double r = std::hypot(c.centre[0], c.centre[1]);
+      EXPECT_NEAR(c.centre[0], -lambda * c.force[0], 1e-9) << e << " " << lambda;
+      EXPECT_NEAR(c.centre[1], lambda * c.force[1], 1e-9) << e << " " << lambda;
       EXPECT_LT(r, 1.0);
       EXPECT_EQ(c.contact, r > 0.25 ? cylinder_contact::partial : cylinder_contact::full);
       EXPECT_EQ(c.contact == cylinder_contact::full, c.contact_angle == 3.141592653589793);
@@ -136,11 +136,11 @@ TEST(TiltedCylinder, LiftOffIsContinuous) {
     const auto a = tilted_cylinder_friction(e, lo, 1.0, 1.0);
     const auto b = tilted_cylinder_friction(e, hi, 1.0, 1.0);
     EXPECT_EQ(b.contact, cylinder_contact::partial);
-    EXPECT_NEAR(std::hypot(a.centre_forward, a.centre_sideways), 0.25, 1e-12);
-    EXPECT_NEAR(a.along, b.along, 1e-9) << e;
-    EXPECT_NEAR(a.sideways, b.sideways, 1e-9) << e;
+    EXPECT_NEAR(std::hypot(a.centre[0], a.centre[1]), 0.25, 1e-12);
+    EXPECT_NEAR(a.force[0], b.force[0], 1e-9) << e;
+    EXPECT_NEAR(a.force[1], b.force[1], 1e-9) << e;
     EXPECT_NEAR(a.torque, b.torque, 1e-9) << e;
-    EXPECT_NEAR(a.centre_sideways, b.centre_sideways, 1e-9) << e;
+    EXPECT_NEAR(a.centre[1], b.centre[1], 1e-9) << e;
   }
 }
 
@@ -174,8 +174,8 @@ scan_result scan_heights(double eps, const height_scan& scan, const Policy& pol)
     try {
       const auto now = tilted_cylinder_friction(eps, h, 0.05, 0.3, pol);
       out.tipped += now.contact == cylinder_contact::tipped;
-      out.jump = std::fmax(out.jump, std::fabs(now.along - previous.along) +
-                                         std::fabs(now.sideways - previous.sideways) +
+      out.jump = std::fmax(out.jump, std::fabs(now.force[0] - previous.force[0]) +
+                                         std::fabs(now.force[1] - previous.force[1]) +
                                          std::fabs(now.torque - previous.torque));
       previous = now;
     } catch (const std::exception&) {
@@ -226,18 +226,18 @@ TEST(TiltedCylinder, RegressionNoExceptionJustPastLiftOff) {
 TEST(TiltedCylinder, TippingIsAnOutcome) {
   const auto near = tilted_cylinder_friction(2.0, 0.9999, 1.0, 1.0);
   EXPECT_EQ(near.contact, cylinder_contact::partial);
-  EXPECT_NEAR(std::atan2(near.centre_sideways, near.centre_forward), std::asin(0.5), 1e-2);
-  EXPECT_GT(std::hypot(near.centre_forward, near.centre_sideways), 0.999);
+  EXPECT_NEAR(std::atan2(near.centre[1], near.centre[0]), std::asin(0.5), 1e-2);
+  EXPECT_GT(std::hypot(near.centre[0], near.centre[1]), 0.999);
   EXPECT_EQ(tilted_cylinder_friction(2.0, 1.0, 1.0, 1.0).contact, cylinder_contact::tipped);
   EXPECT_EQ(tilted_cylinder_friction(1.0, 0.1729, 0.05, 0.3).contact, cylinder_contact::partial);
   const auto tipped = tilted_cylinder_friction(1.0, 0.1730, 0.05, 0.3);
   EXPECT_EQ(tipped.contact, cylinder_contact::tipped);
-  EXPECT_TRUE(std::isnan(tipped.along) && std::isnan(tipped.centre_forward));
+  EXPECT_TRUE(std::isnan(tipped.force[0]) && std::isnan(tipped.centre[0]));
   EXPECT_EQ(tilted_cylinder_friction(0.5, 3.0, 1.0, 1.0).contact, cylinder_contact::partial);
   const auto slide = tilted_cylinder_friction(HUGE_VAL, 0.6, 1.0, 1.0);
   EXPECT_EQ(slide.contact, cylinder_contact::partial);
-  EXPECT_EQ(slide.along, -1.0);
-  EXPECT_EQ(slide.centre_forward, 0.6);
+  EXPECT_EQ(slide.force[0], -1.0);
+  EXPECT_EQ(slide.centre[0], 0.6);
   EXPECT_EQ(tilted_cylinder_friction(HUGE_VAL, 1.0, 1.0, 1.0).contact, cylinder_contact::tipped);
 }
 

@@ -280,7 +280,7 @@ long double energy_of(const planar_metric<Real>& w, const std::array<long double
 // W, about κ ε_mach of s): |P| = μΛ𝓕(ε), |L| = μΛa𝓣(ε) at its own ratio,
 // against it.  False if the case is not resolved.
 template <class Real>
-bool law_holds(const random_case<Real>& c, const friction_result<std::array<Real, 2>, Real>& r,
+bool law_holds(const random_case<Real>& c, const impulse_result<std::array<Real, 2>, Real>& r,
                const std::array<long double, 3>& s, const std::array<long double, 3>& p,
                const std::array<long double, 3>& after, double tolerance) {
   const long double speed = std::hypot(after[0], after[1]);
@@ -305,7 +305,7 @@ bool law_holds(const random_case<Real>& c, const friction_result<std::array<Real
 // more kinetic energy; where the set is thick (a ≥ 1e-3 of W's scale) and
 // the slip resolved, the law's conditions.  True if those were checked.
 template <class Real>
-bool check_case(const random_case<Real>& c, const friction_result<std::array<Real, 2>, Real>& r,
+bool check_case(const random_case<Real>& c, const impulse_result<std::array<Real, 2>, Real>& r,
                 double tolerance) {
   const hertz<Real> sphere;
   const std::array<long double, 3> s{c.vx, c.vy, c.spin}, p{r.force[0], r.force[1], r.torque};

@@ -84,7 +84,7 @@ double height_above_curve(const P& p, double x, double y) {
   return y - p.torque(tau / (1 - tau));
 }
 
-void expect_unchanged(const limit_projection<double>& r, double x, double y,
+void expect_unchanged(const friction_result<double, double>& r, double x, double y,
                       const std::string& where) {
   EXPECT_EQ(r.force, x) << where;
   EXPECT_EQ(r.torque, y) << where;
@@ -288,7 +288,7 @@ TEST(LimitSet, BadInputUnderErrnoIsNaN) {
 // What fuzz_limit_set found (docs/reliability.md): extreme weights, starts
 // and points.  Each answer against an independent expectation.
 namespace {
-using spinslide::limit_projection;
+using spinslide::friction_result;
 
 // y and w so large that the nearest point keeps t = ⟨r⟩ (a NaN on the edge:
 // w·py·dt overflowed; a point 1e59 above L called sticking: the chord beside

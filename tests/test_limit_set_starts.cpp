@@ -142,8 +142,9 @@ TEST(LimitSet, WarmProjectionsEndOnTheCurve) {
 
 // Two projections of the same point: the same verdict and, sliding, the same
 // ratio (relative) and values (absolute) to the given tolerances.
-void expect_same_projection(const limit_projection<double>& a, const limit_projection<double>& b,
-                            double ratio_tolerance, double value_tolerance, double context) {
+void expect_same_projection(const friction_result<double, double>& a,
+                            const friction_result<double, double>& b, double ratio_tolerance,
+                            double value_tolerance, double context) {
   ASSERT_EQ(a.sticking, b.sticking) << context;
   if (a.sticking) return;
   EXPECT_NEAR(a.ratio / b.ratio, 1, ratio_tolerance) << context;
@@ -217,13 +218,13 @@ tangent_wrench<double> slipping_target(const P& p, const planar_metric<double>& 
     for (std::size_t k = 0; k < 3; ++k) z[row] += m.inverse()[row][k] * n[k];
   return {z[0], z[1], z[2]};
 }
-void expect_same_slip(const wrench_projection<double>& a, const wrench_projection<double>& b,
-                      double e) {
+void expect_same_slip(const friction_result<std::array<double, 2>, double>& a,
+                      const friction_result<std::array<double, 2>, double>& b, double e) {
   EXPECT_FALSE(a.sticking || b.sticking) << e;
   EXPECT_NEAR(a.ratio / b.ratio, 1, 1e-12) << e;
-  EXPECT_NEAR(a.point.force_x, b.point.force_x, 1e-14) << e;
-  EXPECT_NEAR(a.point.force_y, b.point.force_y, 1e-14) << e;
-  EXPECT_NEAR(a.point.torque, b.point.torque, 1e-14) << e;
+  EXPECT_NEAR(a.force[0], b.force[0], 1e-14) << e;
+  EXPECT_NEAR(a.force[1], b.force[1], 1e-14) << e;
+  EXPECT_NEAR(a.torque, b.torque, 1e-14) << e;
 }
 template <class P>
 evaluation_counts evaluations_in_a_metric_from_nearby_start(const P& p) {
@@ -286,8 +287,8 @@ TEST(LimitSet, ASlidingResultCarriesTheCurvePoint) {
   }
   const auto disk = project_to_limit_set(uniform_disk<>(), 1.5, 1.0, 1.0);
   ASSERT_FALSE(disk.sticking);
-  EXPECT_TRUE(std::isnan(disk.slope));  // a secant's estimate is not reported
-  EXPECT_TRUE(std::isnan(disk.curvature));
+  EXPECT_TRUE(std::isnan(disk.point.slope));  // a secant's estimate is not reported
+  EXPECT_TRUE(std::isnan(disk.point.curvature));
   const auto stick = project_to_limit_set(h, 0.1, 0.1, 1.0);
   ASSERT_TRUE(stick.sticking);
   // no start, which the next projection takes
@@ -297,6 +298,36 @@ TEST(LimitSet, ASlidingResultCarriesTheCurvePoint) {
   const auto next = project_to_limit_set(h, 1.5, 1.0, 1.0, stick.curve());
   const auto cold = project_to_limit_set(h, 1.5, 1.0, 1.0);
   EXPECT_EQ(next.ratio, cold.ratio);
+}
+
+// curve() has one meaning (issue 40): the point the contact's next
+// projection starts from.  A stick keeps the start it was given, a curve
+// point with its values or a ratio alone, in 2-D and in a metric; without
+// one it is {}.
+TEST(LimitSet, AStickKeepsTheGivenStart) {
+  const hertz<> h;
+  const auto slip = project_to_limit_set(h, 1.5, 1.0, 1.0);
+  ASSERT_FALSE(slip.sticking);
+  const curve_point<double> from = slip.curve();
+  for (const curve_point<double>& start : {from, curve_point<double>{0.7}}) {
+    const auto stick = project_to_limit_set(h, 0.1, 0.1, 1.0, start);
+    ASSERT_TRUE(stick.sticking);
+    EXPECT_EQ(stick.force, 0.1);
+    EXPECT_TRUE(std::isnan(stick.ratio));
+    EXPECT_EQ(stick.curve().ratio, start.ratio);
+    EXPECT_TRUE(stick.curve().force == start.force ||
+                (std::isnan(stick.curve().force) && std::isnan(start.force)));
+    const planar_metric<double> m({{{2.0, 0.1, 0.0}, {0.1, 1.0, 0.2}, {0.0, 0.2, 1.5}}});
+    const auto stick3 = project_to_limit_set(h, tangent_wrench<double>{0.05, -0.02, 0.1}, m, start);
+    ASSERT_TRUE(stick3.sticking);
+    EXPECT_EQ(stick3.force[0], 0.05);
+    EXPECT_EQ(stick3.force[1], -0.02);
+    EXPECT_EQ(stick3.torque, 0.1);
+    EXPECT_EQ(stick3.curve().ratio, start.ratio);
+  }
+  const planar_metric<double> identity({{{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}});
+  EXPECT_EQ(project_to_limit_set(h, tangent_wrench<double>{0.05, 0.0, 0.1}, identity).curve().ratio,
+            0.0);
 }
 
 // From the curve point of the contact's last projection, the search takes

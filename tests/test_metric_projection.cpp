@@ -33,6 +33,11 @@ using matrix = planar_metric<double>::matrix;
 // Entries of order one, condition numbers up to about 10⁴.
 matrix random_metric(std::mt19937_64& rng) { return spinslide_test::random_spd(rng, 1e-4, 0.1); }
 
+// A 3-D projection's point (its 2-vector force and its torque) as a wrench.
+tangent_wrench<double> wrench_of(const friction_result<std::array<double, 2>, double>& r) {
+  return {r.force[0], r.force[1], r.torque};
+}
+
 double metric_distance(const matrix& m, const tangent_wrench<double>& a,
                        const tangent_wrench<double>& b) {
   const double d[3] = {a.force_x - b.force_x, a.force_y - b.force_y, a.torque - b.torque};
@@ -102,10 +107,10 @@ double frobenius(const matrix& m) {
 
 // The outward normal of L₃ at the projection's point, (ε f̂, σ) scaled to
 // unit length; at ε = ∞ (f̂, 0).
-std::array<double, 3> outward_normal(const wrench_projection<double>& r) {
-  const double f = std::hypot(r.point.force_x, r.point.force_y);
-  const double fx = f > 0 ? r.point.force_x / f : 0, fy = f > 0 ? r.point.force_y / f : 0;
-  const double sigma = r.point.torque >= 0 ? 1 : -1;
+std::array<double, 3> outward_normal(const friction_result<std::array<double, 2>, double>& r) {
+  const double f = std::hypot(r.force[0], r.force[1]);
+  const double fx = f > 0 ? r.force[0] / f : 0, fy = f > 0 ? r.force[1] / f : 0;
+  const double sigma = r.torque >= 0 ? 1 : -1;
   if (std::isinf(r.ratio)) return {fx, fy, 0};
   const double len = std::hypot(r.ratio, 1.0);
   return {r.ratio * fx / len, r.ratio * fy / len, sigma / len};
@@ -118,13 +123,12 @@ std::array<double, 3> outward_normal(const wrench_projection<double>& r) {
 // 1e-12 of z − p).  For a convex set these prove the nearest point.
 template <class P>
 void expect_optimal(const P& p, const matrix& m, const tangent_wrench<double>& z,
-                    const wrench_projection<double>& r) {
+                    const friction_result<std::array<double, 2>, double>& r) {
   ASSERT_FALSE(r.sticking);
   const auto ft = p.force_torque(r.ratio);
-  EXPECT_NEAR(std::hypot(r.point.force_x, r.point.force_y), ft.force, 4e-16 * (1 + ft.force));
-  EXPECT_NEAR(std::fabs(r.point.torque), ft.torque, 4e-16 * (1 + ft.torque));
-  const double d[3] = {z.force_x - r.point.force_x, z.force_y - r.point.force_y,
-                       z.torque - r.point.torque};
+  EXPECT_NEAR(std::hypot(r.force[0], r.force[1]), ft.force, 4e-16 * (1 + ft.force));
+  EXPECT_NEAR(std::fabs(r.torque), ft.torque, 4e-16 * (1 + ft.torque));
+  const double d[3] = {z.force_x - r.force[0], z.force_y - r.force[1], z.torque - r.torque};
   double s[3] = {0, 0, 0};
   for (std::size_t i = 0; i < 3; ++i)
     for (std::size_t j = 0; j < 3; ++j) s[i] += m[i][j] * d[j];
@@ -136,7 +140,7 @@ void expect_optimal(const P& p, const matrix& m, const tangent_wrench<double>& z
   const double off =
       std::sqrt(across[0] * across[0] + across[1] * across[1] + across[2] * across[2]);
   const double representable = 4 * 2.2204460492503131e-16 * frobenius(m) *
-                               (1 + std::hypot(r.point.force_x, r.point.force_y, r.point.torque));
+                               (1 + std::hypot(r.force[0], r.force[1], r.torque));
   EXPECT_LE(off, 1e-12 * slen + representable) << "normality, ratio " << r.ratio;
 }
 
@@ -149,7 +153,7 @@ void expect_against_brute_force(const P& p, const std::string& name) {
     if (r.sticking) continue;
     ++slipping;
     expect_optimal(p, c.m, c.z, r);
-    const double ours = metric_distance(c.m, r.point, c.z);
+    const double ours = metric_distance(c.m, wrench_of(r), c.z);
     const double grid = brute_force_distance(p, c.m, c.z);
     EXPECT_LE(ours, grid * (1 + 1e-12)) << name << ": the grid found a nearer point";
     EXPECT_GE(ours, grid * (1 - 1e-6)) << name << ": the grid's best is far from ours";
@@ -195,17 +199,17 @@ TEST(MetricProjection, IsotropicMetricIsTheProjectionOfMagnitudes) {
     const auto flat = project_to_limit_set(p, zf, std::fabs(z.torque), w);
     ASSERT_EQ(r.sticking, flat.sticking);
     if (r.sticking) {
-      EXPECT_EQ(r.point.force_x, z.force_x);
-      EXPECT_EQ(r.point.force_y, z.force_y);
-      EXPECT_EQ(r.point.torque, z.torque);
+      EXPECT_EQ(r.force[0], z.force_x);
+      EXPECT_EQ(r.force[1], z.force_y);
+      EXPECT_EQ(r.torque, z.torque);
       continue;
     }
     ++slipping;
-    EXPECT_NEAR(std::hypot(r.point.force_x, r.point.force_y), flat.force, 2e-14);
-    EXPECT_NEAR(std::fabs(r.point.torque), flat.torque, 2e-14);
-    EXPECT_NEAR(r.point.force_x * z.force_y - r.point.force_y * z.force_x, 0, 1e-14)
+    EXPECT_NEAR(std::hypot(r.force[0], r.force[1]), flat.force, 2e-14);
+    EXPECT_NEAR(std::fabs(r.torque), flat.torque, 2e-14);
+    EXPECT_NEAR(r.force[0] * z.force_y - r.force[1] * z.force_x, 0, 1e-14)
         << "the force keeps the direction of z's";
-    EXPECT_GE(r.point.torque * z.torque, 0) << "and the torque its sign";
+    EXPECT_GE(r.torque * z.torque, 0) << "and the torque its sign";
     if (std::isfinite(flat.ratio) && flat.ratio > 0) {
       EXPECT_NEAR(r.ratio / flat.ratio, 1, 1e-11);
     }
@@ -221,9 +225,9 @@ TEST(MetricProjection, AStartingRatioGivesTheSameProjection) {
     if (r.sticking) continue;
     for (double start : {1e-3, 0.5, 3.0, 1e4}) {
       const auto s = project_to_limit_set(h, c.z, metric, curve_point<double>{start});
-      EXPECT_NEAR(s.point.force_x, r.point.force_x, 1e-14);
-      EXPECT_NEAR(s.point.force_y, r.point.force_y, 1e-14);
-      EXPECT_NEAR(s.point.torque, r.point.torque, 1e-14);
+      EXPECT_NEAR(s.force[0], r.force[0], 1e-14);
+      EXPECT_NEAR(s.force[1], r.force[1], 1e-14);
+      EXPECT_NEAR(s.torque, r.torque, 1e-14);
     }
     // From the curve point the answer left (its values save an evaluation),
     // and from a wrong point (only a worse start): the same answer.
@@ -231,9 +235,9 @@ TEST(MetricProjection, AStartingRatioGivesTheSameProjection) {
     for (const curve_point<double>& from : {r.curve(), wrong}) {
       const auto s = project_to_limit_set(h, c.z, metric, from);
       EXPECT_FALSE(s.sticking);
-      EXPECT_NEAR(s.point.force_x, r.point.force_x, 1e-14);
-      EXPECT_NEAR(s.point.force_y, r.point.force_y, 1e-14);
-      EXPECT_NEAR(s.point.torque, r.point.torque, 1e-14);
+      EXPECT_NEAR(s.force[0], r.force[0], 1e-14);
+      EXPECT_NEAR(s.force[1], r.force[1], 1e-14);
+      EXPECT_NEAR(s.torque, r.torque, 1e-14);
     }
   }
 }
@@ -268,14 +272,14 @@ TEST(MetricProjection, EndsOfTheCurve) {
   const planar_metric<double> identity(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
   const uniform_disk<> p;
   const auto slide = project_to_limit_set(p, tangent_wrench<double>{0, -3, 0}, identity);
-  EXPECT_EQ(slide.point.force_x, 0);
-  EXPECT_EQ(slide.point.force_y, -1);
-  EXPECT_EQ(slide.point.torque, 0);
+  EXPECT_EQ(slide.force[0], 0);
+  EXPECT_EQ(slide.force[1], -1);
+  EXPECT_EQ(slide.torque, 0);
   EXPECT_TRUE(std::isinf(slide.ratio));
   const auto spin = project_to_limit_set(p, tangent_wrench<double>{0, 0, -3}, identity);
-  EXPECT_EQ(spin.point.force_x, 0);
-  EXPECT_EQ(spin.point.force_y, 0);
-  EXPECT_DOUBLE_EQ(spin.point.torque, -p.mean_radius());
+  EXPECT_EQ(spin.force[0], 0);
+  EXPECT_EQ(spin.force[1], 0);
+  EXPECT_DOUBLE_EQ(spin.torque, -p.mean_radius());
   EXPECT_EQ(spin.ratio, 0);
 }
 
@@ -299,16 +303,15 @@ TEST(MetricProjection, RegressionStallWithANearlySingularMetric) {
 // The projection of z for a load concentrated within radius 1e-6 (weight
 // `load`) plus a ring (weight `ring_weight`) in the metric m: optimal, with
 // the force along z's; returns it.
-wrench_projection<double> expect_nearest_for_a_concentrated_load(double load, double ring_weight,
-                                                                 const matrix& m,
-                                                                 const tangent_wrench<double>& z) {
+friction_result<std::array<double, 2>, double> expect_nearest_for_a_concentrated_load(
+    double load, double ring_weight, const matrix& m, const tangent_wrench<double>& z) {
   const auto p =
       weighted_sum({load, ring_weight},
                    scaled<uniform_disk<double>>(uniform_disk<double>(), 9.99999999999999954748e-07),
                    ring<double>());
   const auto r = project_to_limit_set(p, z, planar_metric<double>(m));
   expect_optimal(p, m, z, r);
-  EXPECT_GT(r.point.force_x * z.force_x + r.point.force_y * z.force_y, 0) << "the force along z's";
+  EXPECT_GT(r.force[0] * z.force_x + r.force[1] * z.force_y, 0) << "the force along z's";
   return r;
 }
 
@@ -359,7 +362,7 @@ TEST(MetricProjection, RegressionJustBeyondTheSlidingCorner) {
                           : project_to_limit_set(hertz<>(), z, planar_metric<double>(m));
     ASSERT_FALSE(r.sticking);
     EXPECT_GT(r.ratio, 1e15);
-    EXPECT_LE(metric_distance(m, r.point, z), metric_distance(m, corner, z) * (1 + 1e-9));
+    EXPECT_LE(metric_distance(m, wrench_of(r), z), metric_distance(m, corner, z) * (1 + 1e-9));
   }
 }
 

@@ -8,11 +8,11 @@
 // archetype's law (𝓕 = ε/(1 + ε), 𝓣 = 1/(1 + ε)) gives an answer in closed
 // form, the entry point is run and checked against it.
 
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/base/named_inputs.hpp>
 #include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/contact_law.hpp>
 #include <spinslide/contact/planar_metric.hpp>
-#include <spinslide/contact/projection_results.hpp>
 #include <spinslide/contact/spring_friction.hpp>
 #include <spinslide/contact/trial_cap.hpp>
 #include <spinslide/motion/batch_throws.hpp>
@@ -225,8 +225,7 @@ static_assert(names_float<force_torque_result>() && names_float<motion_sample>()
               names_float<inertia_window>() && names_float<ratio_flow_zero>() &&
               names_float<throw_start>() && names_float<tabulated_stop>() &&
               names_float<si_units>() && names_float<tangent_wrench>() &&
-              names_float<curve_point>() && names_float<limit_projection>() &&
-              names_float<wrench_projection>() && names_float<cylinder_friction>() &&
+              names_float<curve_point>() && names_float<cylinder_friction>() &&
               names_float<segment_friction>() && names_float<tilt_integrals>());
 static_assert(names_float<patch_radius>() && names_float<normal_impulse>() &&
               names_float<normal_force>() && names_float<tangential_stiffness>() &&
@@ -235,8 +234,18 @@ static_assert(names_float<patch_radius>() && names_float<normal_impulse>() &&
               names_float<force_contact>() && names_float<spring_stiffness>() &&
               names_float<disk_radius>() && names_float<gravity>() &&
               names_float<initial_speed>() && names_float<initial_spin>());
-static_assert(names_float_with_vector<planar_friction>() &&
-              names_float_with_vector<friction_result>() &&
+// The one result family (issue 40): scalars, 2-vectors and 3-vectors.
+template <class Real>
+using scalar_result = friction_result<Real, Real>;
+template <class Real>
+using spatial_result = friction_result<std::array<Real, 3>, std::array<Real, 3>>;
+template <class Real>
+using impulse_of = impulse_result<std::array<Real, 2>, Real>;
+static_assert(names_float<scalar_result>() && names_float<spatial_result>() &&
+              names_float<impulse_of>());
+static_assert(std::is_same<impulse_of<double>::quantity, impulse_quantity>::value &&
+              std::is_same<scalar_result<double>::quantity, force_quantity>::value);
+static_assert(names_float_with_vector<friction_result>() &&
               names_float_with_vector<spring_history>() &&
               names_float_with_vector<spring_trial>() &&
               names_float_with_vector<capped_friction>());

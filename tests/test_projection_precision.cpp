@@ -88,13 +88,14 @@ std::string name_of() {
 // (the torque the curve gives at that force).
 template <class Profile>
 void expect_sticking(const Profile& profile, const tangent_wrench<typename Profile::value_type>& z,
-                     const wrench_projection<typename Profile::value_type>& r,
+                     const friction_result<std::array<typename Profile::value_type, 2>,
+                                           typename Profile::value_type>& r,
                      const std::string& where) {
   using Real = typename Profile::value_type;
   using std::fabs;
   const Real eps = std::numeric_limits<Real>::epsilon();
-  EXPECT_EQ(r.point.force_x, z.force_x) << where;
-  EXPECT_EQ(r.point.torque, z.torque) << where;
+  EXPECT_EQ(r.force[0], z.force_x) << where;
+  EXPECT_EQ(r.torque, z.torque) << where;
   const Real f = Real(hypot(to_big(z.force_x), to_big(z.force_y)));
   ASSERT_LE(f, Real(1)) << where;
   EXPECT_LE(fabs(z.torque), torque_at_force(profile, f) * (1 + 64 * eps) + 64 * eps) << where;
@@ -103,23 +104,22 @@ void expect_sticking(const Profile& profile, const tangent_wrench<typename Profi
 // The unit outward normal of L₃ at the answer: (ε f̂, σ)/√(ε² + 1), or
 // (f̂, 0) at ε = ∞.
 template <class Real>
-std::array<big, 3> unit_normal(const wrench_projection<Real>& r) {
-  const big fx = to_big(r.point.force_x), fy = to_big(r.point.force_y);
+std::array<big, 3> unit_normal(const friction_result<std::array<Real, 2>, Real>& r) {
+  const big fx = to_big(r.force[0]), fy = to_big(r.force[1]);
   const big f = sqrt(fx * fx + fy * fy);
   const big dx = f > 0 ? fx / f : big(1), dy = f > 0 ? fy / f : big(0);
   if ((boost::math::isinf)(r.ratio)) return {dx, dy, big(0)};
   const big e = to_big(r.ratio), len = sqrt(e * e + 1);
-  const big sigma = r.point.torque >= 0 ? 1 : -1;
+  const big sigma = r.torque >= 0 ? 1 : -1;
   return {e * dx / len, e * dy / len, sigma / len};
 }
 
 // s = M(z − p) in 50 digits, and ‖M‖_F.
 template <class Real>
 std::array<big, 3> slip_of(const planar_metric<Real>& m, const tangent_wrench<Real>& z,
-                           const wrench_projection<Real>& r, big& norm_m) {
-  const big d[3] = {to_big(z.force_x) - to_big(r.point.force_x),
-                    to_big(z.force_y) - to_big(r.point.force_y),
-                    to_big(z.torque) - to_big(r.point.torque)};
+                           const friction_result<std::array<Real, 2>, Real>& r, big& norm_m) {
+  const big d[3] = {to_big(z.force_x) - to_big(r.force[0]), to_big(z.force_y) - to_big(r.force[1]),
+                    to_big(z.torque) - to_big(r.torque)};
   std::array<big, 3> s{};
   norm_m = 0;
   for (std::size_t i = 0; i < 3; ++i)
@@ -139,16 +139,16 @@ std::array<big, 3> slip_of(const planar_metric<Real>& m, const tangent_wrench<Re
 template <class Profile>
 void expect_nearest(const Profile& profile, const planar_metric<typename Profile::value_type>& m,
                     const tangent_wrench<typename Profile::value_type>& z,
-                    const wrench_projection<typename Profile::value_type>& r,
+                    const friction_result<std::array<typename Profile::value_type, 2>,
+                                          typename Profile::value_type>& r,
                     const std::string& where) {
   using Real = typename Profile::value_type;
   if (r.sticking) return expect_sticking(profile, z, r, where);
   const double eps = static_cast<double>(std::numeric_limits<Real>::epsilon());
-  const big f = hypot(to_big(r.point.force_x), to_big(r.point.force_y));
+  const big f = hypot(to_big(r.force[0]), to_big(r.force[1]));
   const auto c = profile.force_torque(r.ratio);
   EXPECT_LE(static_cast<double>(abs(f - to_big(c.force))), 8 * eps) << where;
-  EXPECT_LE(static_cast<double>(abs(abs(to_big(r.point.torque)) - to_big(c.torque))), 8 * eps)
-      << where;
+  EXPECT_LE(static_cast<double>(abs(abs(to_big(r.torque)) - to_big(c.torque))), 8 * eps) << where;
   big norm_m;
   const std::array<big, 3> s = slip_of(m, z, r, norm_m), n = unit_normal(r);
   const big along = s[0] * n[0] + s[1] * n[1] + s[2] * n[2];
@@ -183,7 +183,7 @@ void project_random_cases(const Profile& profile, const std::string& profile_nam
                                    Real(scale * u(rng))};
       const std::string where = name_of<Real>() + " " + profile_name + ", condition " +
                                 std::to_string(kappa) + ", case " + std::to_string(k);
-      const wrench_projection<Real> r = project_to_limit_set(profile, z, metric);
+      const friction_result<std::array<Real, 2>, Real> r = project_to_limit_set(profile, z, metric);
       expect_nearest(profile, metric, z, r, where);
       slipping += r.sticking ? 0 : 1;
     }
@@ -273,10 +273,10 @@ TEST(ProjectionPrecision, TheTypesAgree) {
         planar_metric<long double>(ml));
     if (rd.sticking != rf.sticking) continue;  // z on the boundary to float's rounding
     EXPECT_EQ(rd.sticking, rl.sticking);
-    EXPECT_NEAR(rf.point.force_x, rd.point.force_x, 100 * 64 * 6e-8) << k;
-    EXPECT_NEAR(rf.point.torque, rd.point.torque, 100 * 64 * 6e-8) << k;
-    EXPECT_NEAR(double(rl.point.force_x), rd.point.force_x, 100 * 64 * 1.1e-16) << k;
-    EXPECT_NEAR(double(rl.point.torque), rd.point.torque, 100 * 64 * 1.1e-16) << k;
+    EXPECT_NEAR(rf.force[0], rd.force[0], 100 * 64 * 6e-8) << k;
+    EXPECT_NEAR(rf.torque, rd.torque, 100 * 64 * 6e-8) << k;
+    EXPECT_NEAR(double(rl.force[0]), rd.force[0], 100 * 64 * 1.1e-16) << k;
+    EXPECT_NEAR(double(rl.torque), rd.torque, 100 * 64 * 1.1e-16) << k;
   }
 }
 

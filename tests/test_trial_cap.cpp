@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/contact/contact_inputs.hpp>
-#include <spinslide/contact/projection_results.hpp>
 #include <spinslide/contact/spring_friction.hpp>
 #include <spinslide/contact/trial_cap.hpp>
 #include <spinslide/values/coupling.hpp>

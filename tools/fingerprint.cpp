@@ -158,7 +158,7 @@ int main() {
   std::printf("contact_friction %a %a %a\n", cf.force[0], cf.force[1], cf.torque);
   for (double e : {0.0, 0.5, 2.0}) {
     const auto c = tilted_cylinder_friction(e, 0.05, 0.06, 0.2);
-    std::printf("cylinder %a %a %a %a %a\n", c.along, c.sideways, c.torque, c.centre_forward,
-                c.centre_sideways);
+    std::printf("cylinder %a %a %a %a %a\n", c.force[0], c.force[1], c.torque, c.centre[0],
+                c.centre[1]);
   }
 }

@@ -43,8 +43,8 @@ class friction_of_eps {
     for (int i = 0; i <= nodes; ++i) {
       const auto f = spinslide::tilted_cylinder_friction(i * step, h, R, mu);
       tipped_ = tipped_ || f.contact == spinslide::cylinder_contact::tipped;
-      along.push_back(f.along);
-      side.push_back(f.sideways);
+      along.push_back(f.force[0]);
+      side.push_back(f.force[1]);
       torque.push_back(f.torque);
     }
     if (tipped_) return;
@@ -56,7 +56,7 @@ class friction_of_eps {
   bool operator()(double eps, std::array<double, 3>& f) const {
     if (tipped_ || !(eps <= nodes * step)) {
       const auto c = spinslide::tilted_cylinder_friction(eps, h_, R, mu);
-      f = {c.along, c.sideways, c.torque};
+      f = {c.force[0], c.force[1], c.torque};
       return c.contact != spinslide::cylinder_contact::tipped;
     }
     f = {along_(eps), side_(eps), torque_(eps)};

@@ -12,6 +12,7 @@
 #ifndef SPINSLIDE_CONTACT_HPP
 #define SPINSLIDE_CONTACT_HPP
 
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/contact_law.hpp>
 #include <spinslide/contact/impulse_friction.hpp>
@@ -20,7 +21,6 @@
 #include <spinslide/contact/pair_friction.hpp>
 #include <spinslide/contact/pair_report.hpp>
 #include <spinslide/contact/planar_metric.hpp>
-#include <spinslide/contact/projection_results.hpp>
 #include <spinslide/contact/spring_friction.hpp>
 #include <spinslide/contact/trial_cap.hpp>
 

@@ -10,6 +10,7 @@
 #ifndef SPINSLIDE_VALUES_HPP
 #define SPINSLIDE_VALUES_HPP
 
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/base/named_inputs.hpp>
 #include <spinslide/values/approximations.hpp>
 #include <spinslide/values/coupling.hpp>

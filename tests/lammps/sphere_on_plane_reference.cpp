@@ -115,7 +115,7 @@ void cap_friction(const Profile& profile, double mu_load, double a, const spring
   if (fmag == 0.0 && torque == 0.0) return;
   const double f = fmag / mu_load;
   const double t = std::fabs(torque) / (mu_load * a);
-  const spinslide::limit_projection<double> p = spinslide::project_to_limit_set(
+  const spinslide::friction_result<double, double> p = spinslide::project_to_limit_set(
       profile, f, t, a * a * k.kt / k.kw, spinslide::curve_point<double>{h.ratio});
   if (p.sticking) return;
   if (!std::isnan(p.ratio)) h.ratio = p.ratio;

@@ -23,67 +23,66 @@ namespace spinslide {
 
 /// The contact patch's radius a (a length, > 0).
 template <class Real>
-struct patch_radius {
-  using value_type = Real;  ///< the floating type
-  /// Explicit, and not an aggregate: a plain number does not convert, not
-  /// even by brace elision inside impulse_contact.
-  explicit constexpr patch_radius(Real v) : value(v) {}
-  Real value;  ///< a
+struct patch_radius : named_input<patch_radius<Real>, Real> {
+  using named_input<patch_radius<Real>, Real>::named_input;
 };
+/// patch_radius{x} is a patch_radius<double> for a double x.
+template <class Real>
+patch_radius(Real) -> patch_radius<Real>;
 /// The normal impulse over the step, Λ = ∫N dt (≥ 0), for the impulse law.
 template <class Real>
-struct normal_impulse {
-  using value_type = Real;  ///< the floating type
-  /// Explicit, and not an aggregate: a plain number does not convert, not
-  /// even by brace elision inside impulse_contact.
-  explicit constexpr normal_impulse(Real v) : value(v) {}
-  Real value;  ///< Λ
+struct normal_impulse : named_input<normal_impulse<Real>, Real> {
+  using named_input<normal_impulse<Real>, Real>::named_input;
 };
+/// normal_impulse{x} is a normal_impulse<double> for a double x.
+template <class Real>
+normal_impulse(Real) -> normal_impulse<Real>;
 /// The normal force N (≥ 0), for the force-level laws.
 template <class Real>
-struct normal_force {
-  using value_type = Real;  ///< the floating type
-  /// Explicit, and not an aggregate: a plain number does not convert.
-  explicit constexpr normal_force(Real v) : value(v) {}
-  Real value;  ///< N
+struct normal_force : named_input<normal_force<Real>, Real> {
+  using named_input<normal_force<Real>, Real>::named_input;
 };
+/// normal_force{x} is a normal_force<double> for a double x.
+template <class Real>
+normal_force(Real) -> normal_force<Real>;
 /// The tangential spring's stiffness k_t (force per length, > 0).
 template <class Real>
-struct tangential_stiffness {
-  using value_type = Real;  ///< the floating type
-  /// Explicit, and not an aggregate: a plain number does not convert.
-  explicit constexpr tangential_stiffness(Real v) : value(v) {}
-  Real value;  ///< k_t
+struct tangential_stiffness : named_input<tangential_stiffness<Real>, Real> {
+  using named_input<tangential_stiffness<Real>, Real>::named_input;
 };
+/// tangential_stiffness{x} is a tangential_stiffness<double> for a double x.
+template <class Real>
+tangential_stiffness(Real) -> tangential_stiffness<Real>;
 /// The twisting spring's stiffness k_θ (torque per radian, > 0).
 template <class Real>
-struct twisting_stiffness {
-  using value_type = Real;  ///< the floating type
-  /// Explicit, and not an aggregate: a plain number does not convert.
-  explicit constexpr twisting_stiffness(Real v) : value(v) {}
-  Real value;  ///< k_θ
+struct twisting_stiffness : named_input<twisting_stiffness<Real>, Real> {
+  using named_input<twisting_stiffness<Real>, Real>::named_input;
 };
+/// twisting_stiffness{x} is a twisting_stiffness<double> for a double x.
+template <class Real>
+twisting_stiffness(Real) -> twisting_stiffness<Real>;
 /// The regularized contact law's velocity scale v_s (≥ 0, in the caller's
 /// velocity unit; about 2μgΔt for a time step Δt): below it the law is
 /// scaled down linearly to 0 at rest.
 template <class Real>
-struct velocity_scale {
-  using value_type = Real;  ///< the floating type
-  /// Explicit, and not an aggregate: a plain number does not convert.
-  explicit constexpr velocity_scale(Real v) : value(v) {}
-  Real value;  ///< v_s
+struct velocity_scale : named_input<velocity_scale<Real>, Real> {
+  using named_input<velocity_scale<Real>, Real>::named_input;
 };
+/// velocity_scale{x} is a velocity_scale<double> for a double x.
+template <class Real>
+velocity_scale(Real) -> velocity_scale<Real>;
 
 /// The unit contact normal n of the 3-D contact law: a 3-component vector
 /// class (operator[] or members x, y, z), of length 1 (the law does not
 /// normalize it).  Its own type, so that a call cannot pass the normal where
 /// a velocity goes: law(v, w, contact_normal{n}, contact).
 template <class Vec3>
-struct contact_normal {
-  /// Explicit: a plain vector does not convert.
-  explicit constexpr contact_normal(const Vec3& v) : value(v) {}
-  Vec3 value;  ///< n
+struct contact_normal : named_input<contact_normal<Vec3>, Vec3> {
+  using named_input<contact_normal<Vec3>, Vec3>::named_input;
 };
+/// contact_normal{n} is a contact_normal of n's vector type.
+template <class Vec3>
+contact_normal(Vec3) -> contact_normal<Vec3>;
 
 /// One contact over one time step, for the impulse law (impulse_friction.hpp).
 template <class Real>

@@ -18,50 +18,31 @@
 
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/base/detail/product.hpp>
+#include <spinslide/base/detail/vector_access.hpp>
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/contact/contact_inputs.hpp>
-#include <spinslide/contact/detail/vector_access.hpp>
 #include <spinslide/contact/detail/vector_math.hpp>
 #include <spinslide/values/profile.hpp>
 #include <spinslide/values/profile_concept.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <utility>
 
 namespace spinslide {
 
-/// The friction on a contact in the contact plane: force vector and the
-/// torque about the normal (signed, positive counter-clockwise).
-template <class Vec2, class Real>
-struct planar_friction {
-  using value_type = Real;  ///< the floating type
-  /// The force vector, against the sliding velocity (units of the normal force).
-  Vec2 force;
-  /// The torque about the normal, against the spin.
-  Real torque;
-};
-
-/// The friction on a contact in 3-D: force vector (in the tangent plane) and
-/// torque vector (along the normal), acting at the patch centre.  On a body
-/// it must be applied there, or at another point together with the moment
-/// that wrench_about gives: applied at the centre of mass without it, the
-/// force's moment (c − x)×F is lost.
+/// The 3-D friction `friction` (the contact law's, acting at the patch
+/// centre: a friction_result of a force vector in the tangent plane and a
+/// torque vector along the normal; applied at the centre of mass without
+/// its moment, the force's moment (c − x)×F is lost) as a wrench about
+/// `point`: the force unchanged, the torque T + (c − point) × F with c =
+/// `patch_centre` (any frame, the same for all three).  For a body's centre
+/// of mass x this is the force and torque to apply there.
 template <class Vec3>
-struct spatial_friction {
-  /// The force vector, in the tangent plane, against the sliding velocity.
-  Vec3 force;
-  /// The torque vector about the patch centre, along the normal, against the spin.
-  Vec3 torque;
-};
-
-/// The same friction as a wrench about `point`: the force unchanged, the
-/// torque T + (c − point) × F with c = `patch_centre` (any frame, the same
-/// for all three).  For a body's centre of mass x this is the force and
-/// torque to apply there.
-template <class Vec3>
-spatial_friction<Vec3> wrench_about(const spatial_friction<Vec3>& friction,
-                                    const Vec3& patch_centre, const Vec3& point) {
+friction_result<Vec3, Vec3> wrench_about(const friction_result<Vec3, Vec3>& friction,
+                                         const Vec3& patch_centre, const Vec3& point) {
   static_assert(detail::is_vector<Vec3, 3>(),
                 "spinslide::wrench_about: the points and the friction must be 3-component "
                 "vector classes (operator[] or members x, y, z), not pointers or C arrays");
@@ -71,7 +52,7 @@ spatial_friction<Vec3> wrench_about(const spatial_friction<Vec3>& friction,
                   static_cast<R>(detail::get<2>(patch_centre) - detail::get<2>(point))};
   const R f[3] = {detail::get<0>(friction.force), detail::get<1>(friction.force),
                   detail::get<2>(friction.force)};
-  spatial_friction<Vec3> out = friction;
+  friction_result<Vec3, Vec3> out = friction;
   detail::set<0>(out.torque, detail::get<0>(friction.torque) + (r[1] * f[2] - r[2] * f[1]));
   detail::set<1>(out.torque, detail::get<1>(friction.torque) + (r[2] * f[0] - r[0] * f[2]));
   detail::set<2>(out.torque, detail::get<2>(friction.torque) + (r[0] * f[1] - r[1] * f[0]));
@@ -120,7 +101,7 @@ class contact_law {
   /// `spin`: the relative angular velocity about the normal; `contact`: the
   /// radius a > 0, the normal force N ≥ 0 and μ ≥ 0, each named by its type.
   template <class Vec2>
-  planar_friction<Vec2, Real> operator()(const Vec2& velocity, Real spin,
+  friction_result<Vec2, Real> operator()(const Vec2& velocity, Real spin,
                                          const force_contact<Real>& contact) const {
     static_assert(detail::is_vector<Vec2, 2>(),
                   "spinslide::contact_law: the velocity must be a 2-component vector class "
@@ -129,8 +110,10 @@ class contact_law {
     const Real vx = static_cast<Real>(detail::get<0>(velocity));
     const Real vy = static_cast<Real>(detail::get<1>(velocity));
     Real fx, fy, t;
-    law(vx, vy, spin, contact, fx, fy, t);
-    planar_friction<Vec2, Real> out{Vec2{}, t};
+    friction_result<Vec2, Real> out{Vec2{}, Real(0)};
+    law(vx, vy, spin, contact, fx, fy, t, out.point);
+    out.torque = t;
+    out.ratio = out.point.ratio;
     detail::set<0>(out.force, fx);
     detail::set<1>(out.force, fy);
     return out;
@@ -143,9 +126,9 @@ class contact_law {
   /// velocity enter (rolling is not friction here).  The result acts at the
   /// patch centre (wrench_about moves it to any point).
   template <class Vec3>
-  spatial_friction<Vec3> operator()(const Vec3& velocity, const Vec3& angular_velocity,
-                                    const contact_normal<Vec3>& normal,
-                                    const force_contact<Real>& contact) const {
+  friction_result<Vec3, Vec3> operator()(const Vec3& velocity, const Vec3& angular_velocity,
+                                         const contact_normal<Vec3>& normal,
+                                         const force_contact<Real>& contact) const {
     static_assert(
         detail::is_vector<Vec3, 3>(),
         "spinslide::contact_law: the velocity, angular velocity and normal must be "
@@ -163,8 +146,9 @@ class contact_law {
                  static_cast<Real>(detail::get<2>(velocity))};
     const Real speed = detail::tangential_part(v, n);  // the force is along −v_t
     Real f, t;
-    magnitudes(speed, w, contact, f, t);
-    spatial_friction<Vec3> out{Vec3{}, Vec3{}};
+    friction_result<Vec3, Vec3> out{Vec3{}, Vec3{}};
+    magnitudes(speed, w, contact, f, t, out.point);
+    out.ratio = out.point.ratio;
     // NaN f: a domain error, through a policy that does not throw.
     // −f times the unit vector v/|v| (f/|v| alone overflows for a tiny |v|).
     detail::unit_direction(v, speed);
@@ -203,26 +187,35 @@ class contact_law {
     return ok;
   }
 
-  void magnitudes(Real speed, Real spin, const force_contact<Real>& contact, Real& f,
-                  Real& t) const {
+  // |F| = f and the signed torque t, and `at`, the curve point (ε, 𝓕, 𝓣)
+  // of the motion (ratio NaN at rest or on bad input).
+  void magnitudes(Real speed, Real spin, const force_contact<Real>& contact, Real& f, Real& t,
+                  curve_point<Real>& at) const {
     BOOST_MATH_STD_USING
+    at.ratio = std::numeric_limits<Real>::quiet_NaN();
     if (!valid(speed, spin, contact, f, t)) return;
     const Real a = contact.radius.value;
     const Real muN = contact.friction.value * contact.normal.value;
     const Real rim = a * fabs(spin);  // a|ω|
-    if (!(muN > 0) || (speed == 0 && rim == 0)) return;
+    if (speed == 0 && rim == 0) return;
     Real F, T;
     if (rim == 0) {  // pure sliding (also when a|ω| underflows)
       F = 1;
       T = 0;
+      at.ratio = std::numeric_limits<Real>::infinity();
     } else if (speed == 0) {  // pure spinning
       F = 0;
       T = profile_.mean_radius();
+      at.ratio = 0;
     } else {
-      const auto ft = profile_.force_torque(speed / rim);
+      at.ratio = speed / rim;
+      const auto ft = profile_.force_torque(at.ratio);
       F = ft.force;
       T = ft.torque;
     }
+    at.force = F;
+    at.torque = T;
+    if (!(muN > 0)) return;
     Real scale = 1;
     if (speed < vs_ && rim < vs_) {  // only then can ρ = |(v, aω)| be below v_s
       const Real rho = detail::vector_norm(speed, rim, Real(0));
@@ -236,10 +229,10 @@ class contact_law {
   }
 
   void law(Real vx, Real vy, Real spin, const force_contact<Real>& contact, Real& fx, Real& fy,
-           Real& t) const {
+           Real& t, curve_point<Real>& at) const {
     const Real speed = detail::vector_norm(vx, vy, Real(0));
     Real f;
-    magnitudes(speed, spin, contact, f, t);
+    magnitudes(speed, spin, contact, f, t, at);
     if ((boost::math::isnan)(f)) {  // a domain error, through a policy that does not throw
       fx = fy = f;
       return;
@@ -256,7 +249,7 @@ class contact_law {
 
 /// The uniform-disk contact law as one call, regularized below `scale`.
 template <class Vec2, class Real>
-planar_friction<Vec2, Real> contact_friction(const Vec2& velocity, Real spin,
+friction_result<Vec2, Real> contact_friction(const Vec2& velocity, Real spin,
                                              const force_contact<Real>& contact,
                                              velocity_scale<Real> scale) {
   return contact_law<uniform_disk<Real>>(uniform_disk<Real>(), scale)(velocity, spin, contact);

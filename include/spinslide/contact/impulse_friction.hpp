@@ -26,13 +26,14 @@
 
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/base/detail/product.hpp>
+#include <spinslide/base/detail/vector_access.hpp>
 #include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/detail/impulse_frame.hpp>
 #include <spinslide/contact/detail/impulse_in_frame.hpp>
-#include <spinslide/contact/detail/vector_access.hpp>
 #include <spinslide/contact/limit_set.hpp>
 #include <spinslide/contact/planar_metric.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -52,11 +53,11 @@ namespace spinslide {
 /// patch that starts at zero").  `start`: where the
 /// contact's last step left the limit curve (the last result's curve(), or
 /// `curve_point<Real>{ε}` for a ratio alone; ratio ≥ 0, else a domain error;
-/// `{}`: none); it only speeds the search.  The result's `force` and
-/// `torque` are the impulse (P_x, P_y) and L.  No allocation: two 3×3
-/// factorizations and, when it slips, a few evaluations of the profile.
+/// `{}`: none); it only speeds the search.  The result is an
+/// impulse_result: its `force` and `torque` are the impulse (P_x, P_y) and L.  No allocation: two
+/// 3×3 factorizations and, when it slips, a few evaluations of the profile.
 template <class Profile, class Vec2>
-friction_result<Vec2, typename Profile::value_type> impulse_friction(
+impulse_result<Vec2, typename Profile::value_type> impulse_friction(
     const Profile& profile, const Vec2& velocity, typename Profile::value_type spin,
     const planar_metric<typename Profile::value_type>& inverse_mass,
     const impulse_contact<typename Profile::value_type>& contact,
@@ -81,8 +82,8 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
       detail::checked_patch(function, contact, pol, argument_rule::finite_non_negative);
   const Real a = patch.radius, n = patch.normal, mu = patch.friction;
   const Real s0 = checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
-  friction_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
-                                  start};
+  impulse_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
+                                 start};
   // Every output NaN where a check reported an error through a policy that
   // does not throw.
   auto reported = [&out](Real bad) {
@@ -145,7 +146,7 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
   if (frame.point) return detail::point_limit_result(out, inverse_mass, slip, a, load);
   // In the frame's units (L = cτ), likewise.
   const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / frame.c / load};
-  const wrench_projection<Real> r =
+  const friction_result<std::array<Real, 2>, Real> r =
       frame.k == 1  // the profile's own curve: the one step of a coin's or a block's contact
           ? detail::metric_projector<Profile>(profile, target, frame.metric, frame.inverse)(s0,
                                                                                             &start)
@@ -153,9 +154,9 @@ friction_result<Vec2, typename Profile::value_type> impulse_friction(
   if (r.sticking) return stuck();
   out.ratio = r.ratio;
   out.point = r.curve();
-  detail::set<0>(out.force, Real(load * r.point.force_x));
-  detail::set<1>(out.force, Real(load * r.point.force_y));
-  out.torque = detail::product(load, a, r.point.torque);
+  detail::set<0>(out.force, Real(load * r.force[0]));
+  detail::set<1>(out.force, Real(load * r.force[1]));
+  out.torque = detail::product(load, a, r.torque);
   return out;
 }
 

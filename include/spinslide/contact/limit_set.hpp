@@ -19,14 +19,15 @@
 #define SPINSLIDE_CONTACT_LIMIT_SET_HPP
 
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/contact/detail/limit_projector.hpp>
 #include <spinslide/contact/detail/metric_projector.hpp>
 #include <spinslide/contact/planar_metric.hpp>
-#include <spinslide/contact/projection_results.hpp>
 #include <spinslide/values/profile_concept.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 
+#include <array>
 #include <limits>
 #include <type_traits>
 
@@ -47,11 +48,18 @@ constexpr void require_projectable() {
                 "them), so its normal is not (eps, 1) and the projection does not apply");
 }
 
+// The start a solve was given, as a sticking result's curve(): the point
+// itself, or a ratio alone (`from` null).
+template <class Real>
+curve_point<Real> given_start(Real start, const curve_point<Real>* from) {
+  return from ? *from : curve_point<Real>{start};
+}
+
 template <class Profile, class Real>
-limit_projection<Real> project_checked(const Profile& profile,
-                                       const force_torque_result<Real>& point, Real torque_weight,
-                                       Real start, const char* function,
-                                       const curve_point<Real>* from = nullptr) {
+friction_result<Real, Real> project_checked(const Profile& profile,
+                                            const force_torque_result<Real>& point,
+                                            Real torque_weight, Real start, const char* function,
+                                            const curve_point<Real>* from = nullptr) {
   require_projectable<Profile, Real>();
   using Policy = typename Profile::policy_type;
   const Policy pol;
@@ -64,7 +72,9 @@ limit_projection<Real> project_checked(const Profile& profile,
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     return {nan, nan, false, nan};
   }
-  return limit_projector<Profile>(profile, {f, t}, w)(s, from);
+  friction_result<Real, Real> r = limit_projector<Profile>(profile, {f, t}, w)(s, from);
+  if (r.sticking) r.point = given_start(s, from);
+  return r;
 }
 
 // What the 3-D projection requires besides: a limit curve without corners
@@ -81,11 +91,9 @@ constexpr void require_smooth_curve() {
 }
 
 template <class Profile, class Real>
-wrench_projection<Real> project_wrench_checked(const Profile& profile,
-                                               const tangent_wrench<Real>& point,
-                                               const planar_metric<Real>& metric, Real start,
-                                               const char* function,
-                                               const curve_point<Real>* from = nullptr) {
+friction_result<std::array<Real, 2>, Real> project_wrench_checked(
+    const Profile& profile, const tangent_wrench<Real>& point, const planar_metric<Real>& metric,
+    Real start, const char* function, const curve_point<Real>* from = nullptr) {
   require_smooth_curve<Profile, Real>();
   using Policy = typename Profile::policy_type;
   const Policy pol;
@@ -96,9 +104,12 @@ wrench_projection<Real> project_wrench_checked(const Profile& profile,
   const Real s = checked(function, "start.ratio", start, argument_rule::non_negative, pol);
   if (any_reported(z[0], z[1], z[2], s)) {
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
-    return {{nan, nan, nan}, false, nan};
+    return {{nan, nan}, nan, false, nan};
   }
-  return metric_projector<Profile>(profile, z, metric.entries(), metric.inverse())(s, from);
+  friction_result<std::array<Real, 2>, Real> r =
+      metric_projector<Profile>(profile, z, metric.entries(), metric.inverse())(s, from);
+  if (r.sticking) r.point = given_start(s, from);
+  return r;
 }
 
 }  // namespace detail
@@ -106,7 +117,8 @@ wrench_projection<Real> project_wrench_checked(const Profile& profile,
 /// The point of `profile`'s limit set L nearest to (force, torque) in
 /// (f − force)² + torque_weight·(t − torque)², with f = |F|/(μN) and
 /// t = |T|/(μNa).  Inside L (the boundary included): `sticking`, (force,
-/// torque) unchanged, `ratio` NaN.  Outside: on the curve at `ratio` ε
+/// torque) unchanged, `ratio` NaN, curve() the start given (below; `{}`
+/// without one).  Outside: on the curve at `ratio` ε
 /// (+∞ at (1, 0), 0 at (0, ⟨r⟩)), where the displacement is normal to the
 /// curve in this metric: force − 𝓕 = torque_weight·ε·(torque − 𝓣).
 /// force and torque finite and ≥ 0, torque_weight finite and > 0, all of the
@@ -116,8 +128,8 @@ wrench_projection<Real> project_wrench_checked(const Profile& profile,
 /// (docs/theory.md §1), and so do the elliptic limit surface and the
 /// uncoupled caps; the Padé approximants do not, and do not compile here.
 template <class Profile, class Real>
-limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, Real torque,
-                                            Real torque_weight) {
+friction_result<Real, Real> project_to_limit_set(const Profile& profile, Real force, Real torque,
+                                                 Real torque_weight) {
   return detail::project_checked(profile, {force, torque}, torque_weight, Real(0),
                                  "spinslide::project_to_limit_set<%1%>(profile, %1%, %1%, %1%)");
 }
@@ -132,8 +144,9 @@ limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, 
 /// returned; the result does not depend on them (to rounding): no answer is
 /// taken from them, only a step.
 template <class Profile, class Real>
-limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, Real torque,
-                                            Real torque_weight, const curve_point<Real>& start) {
+friction_result<Real, Real> project_to_limit_set(const Profile& profile, Real force, Real torque,
+                                                 Real torque_weight,
+                                                 const curve_point<Real>& start) {
   // (A point without values is a ratio alone: no first step from it.)
   return detail::project_checked(
       profile, {force, torque}, torque_weight, start.ratio,
@@ -147,14 +160,15 @@ limit_projection<Real> project_to_limit_set(const Profile& profile, Real force, 
 /// couples the force's direction with the torque (an engine's effective mass
 /// over a body with a lever arm), the answer is no longer a projection of
 /// magnitudes: it is found by Newton's method on the dual, convex problem
-/// (docs/theory.md §11, "Any metric").  Inside L₃: `sticking`, the point
-/// unchanged, `ratio` NaN.  Outside: p on the curve at `ratio` ε, with
-/// M(point − p) along the normal (ε f̂, sign t) (maximum dissipation).  Each
-/// component of `point` finite, else a domain error.  No allocation.
+/// (docs/theory.md §11, "Any metric").  The result's force is a 2-vector,
+/// std::array<Real, 2>.  Inside L₃: `sticking`, the point unchanged, `ratio`
+/// NaN, curve() the start given (below; `{}` without one).  Outside: p on the curve at `ratio` ε,
+/// with M(point − p) along the normal (ε f̂, sign t) (maximum dissipation).  Each component of
+/// `point` finite, else a domain error.  No allocation.
 template <class Profile, class Real>
-wrench_projection<Real> project_to_limit_set(const Profile& profile,
-                                             const tangent_wrench<Real>& point,
-                                             const planar_metric<Real>& metric) {
+friction_result<std::array<Real, 2>, Real> project_to_limit_set(const Profile& profile,
+                                                                const tangent_wrench<Real>& point,
+                                                                const planar_metric<Real>& metric) {
   return detail::project_wrench_checked(
       profile, point, metric, Real(0),
       "spinslide::project_to_limit_set<%1%>(profile, tangent_wrench, planar_metric)");
@@ -166,10 +180,10 @@ wrench_projection<Real> project_to_limit_set(const Profile& profile,
 /// from `curve_point<Real>{ε}`, a ratio alone.  The result does not depend
 /// on the point (to rounding): only the start.
 template <class Profile, class Real>
-wrench_projection<Real> project_to_limit_set(const Profile& profile,
-                                             const tangent_wrench<Real>& point,
-                                             const planar_metric<Real>& metric,
-                                             const curve_point<Real>& start) {
+friction_result<std::array<Real, 2>, Real> project_to_limit_set(const Profile& profile,
+                                                                const tangent_wrench<Real>& point,
+                                                                const planar_metric<Real>& metric,
+                                                                const curve_point<Real>& start) {
   return detail::project_wrench_checked(
       profile, point, metric, start.ratio,
       "spinslide::project_to_limit_set<%1%>(profile, tangent_wrench, planar_metric, curve_point)",

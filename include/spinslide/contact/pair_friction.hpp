@@ -96,12 +96,12 @@ class pair_friction {
   /// `inverse_mass` the pair's effective inverse mass over them, `normal` the
   /// normal impulse of the step and `penetration` the depth δ for the radius.
   /// Starts from where the pair's last slip left the limit curve and keeps
-  /// the new point.
-  friction_result<std::array<double, 2>, double> impulse(const std::array<double, 2>& velocity,
-                                                         double spin,
-                                                         const planar_metric<double>& inverse_mass,
-                                                         normal_impulse<double> normal,
-                                                         double penetration) {
+  /// the result's curve() (a stick keeps the last slip's point).
+  impulse_result<std::array<double, 2>, double> impulse(const std::array<double, 2>& velocity,
+                                                        double spin,
+                                                        const planar_metric<double>& inverse_mass,
+                                                        normal_impulse<double> normal,
+                                                        double penetration) {
     const impulse_contact<double> contact{patch_radius<double>{radius(penetration)}, normal,
                                           friction_coefficient<double>{friction_}};
     const auto out = std::visit(
@@ -109,11 +109,11 @@ class pair_friction {
           return impulse_friction(profile, velocity, spin, inverse_mass, contact, last_);
         },
         profile_);
-    last_ = out.sticking ? curve_point<double>{} : out.curve();
+    last_ = out.curve();  // a stick keeps the last slip's point
     return out;
   }
 
-  /// Drops the kept curve point (the pair lost contact, or stuck).
+  /// Drops the kept curve point (the pair lost contact).
   void forget() { last_ = {}; }
 
  private:

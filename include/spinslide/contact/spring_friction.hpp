@@ -22,8 +22,8 @@
 
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/base/detail/product.hpp>
+#include <spinslide/base/detail/vector_access.hpp>
 #include <spinslide/contact/contact_inputs.hpp>
-#include <spinslide/contact/detail/vector_access.hpp>
 #include <spinslide/contact/limit_set.hpp>
 #include <spinslide/contact/trial_cap.hpp>
 

@@ -26,12 +26,12 @@
 
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/base/detail/product.hpp>
+#include <spinslide/base/detail/vector_access.hpp>
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/detail/matrix3.hpp>
-#include <spinslide/contact/detail/vector_access.hpp>
 #include <spinslide/contact/detail/vector_math.hpp>
 #include <spinslide/contact/limit_set.hpp>
-#include <spinslide/contact/projection_results.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 
@@ -57,19 +57,12 @@ struct spring_trial {
   Real damping_torque;      ///< T_d, added to −k_θ φ in the trial torque
 };
 
-/// The capped friction of a DEM contact, and what the contact keeps.
+/// The capped friction of a DEM contact (a friction_result: force, torque,
+/// sticking, ratio, curve()), and the springs the contact keeps.
 template <class Vec, class Real>
-struct capped_friction {
-  using value_type = Real;  ///< the floating type
-  Vec force;                ///< F, on the body whose relative motion stretched the springs
-  Real torque;              ///< T about the normal
-  bool sticking;            ///< true: the trial state was admissible, and is kept
-  Real ratio;               ///< ε of the capped state (NaN if sticking, or without load)
-  Vec displacement;         ///< the tangential spring to keep: −(F − F_d)/k_t (ξ if sticking)
-  Real twist;               ///< the twisting spring to keep: −(T − T_d)/k_θ (φ if sticking)
-  curve_point<Real> point;  ///< where the slip left the curve (the given start if not slipping)
-  /// Where this cap left the limit curve, to start the contact's next one from.
-  curve_point<Real> curve() const { return point; }
+struct capped_friction : friction_result<Vec, Real> {
+  Vec displacement;  ///< the tangential spring to keep: −(F − F_d)/k_t (ξ if sticking)
+  Real twist;        ///< the twisting spring to keep: −(T − T_d)/k_θ (φ if sticking)
 };
 
 namespace detail {
@@ -118,7 +111,7 @@ capped_friction<Vec, typename Profile::value_type> cap_checked(
   const typename Profile::policy_type pol;
   const Real kt = springs.tangential.value, kw = springs.twisting.value;
   const Real nan = std::numeric_limits<Real>::quiet_NaN();
-  capped_friction<Vec, Real> out{Vec{}, Real(0), false, nan, Vec{}, Real(0), start};
+  capped_friction<Vec, Real> out{{Vec{}, Real(0), false, nan, start}, Vec{}, Real(0)};
   auto reported = [&out](Real bad) {
     for (Vec* v : {&out.force, &out.displacement}) write<N>(*v, vector3<Real>{bad, bad, bad});
     out.torque = out.twist = out.ratio = bad;
@@ -138,7 +131,7 @@ capped_friction<Vec, typename Profile::value_type> cap_checked(
   // is below 2^-1024 of the trial: the exact cap is as far below it, zero
   // to the trial's precision, and is taken as zero (a contact coming apart).
   const Real x = f / load, y = fabs(t) / a / load;
-  limit_projection<Real> cap{0, 0, f == 0 && t == 0, nan};
+  friction_result<Real, Real> cap{0, 0, f == 0 && t == 0, nan};
   if (load > 0 && (isfinite)(x) && (isfinite)(y)) {
     Real weight = a * a * kt / kw;
     if (!(weight > 0 && (isfinite)(weight))) {  // a² alone out of range, or the whole
@@ -233,7 +226,7 @@ capped_friction<Vec, typename Profile::value_type> cap_trial_state(
                            in.damping[2], in.twist, in.damping_torque, k.tangential.value,
                            k.twisting.value, patch.radius, patch.normal, patch.friction, s)) {
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
-    capped_friction<Vec, Real> out{Vec{}, nan, false, nan, Vec{}, nan, start};
+    capped_friction<Vec, Real> out{{Vec{}, nan, false, nan, start}, Vec{}, nan};
     for (Vec* v : {&out.force, &out.displacement})
       detail::write<n>(*v, detail::vector3<Real>{nan, nan, nan});
     return out;

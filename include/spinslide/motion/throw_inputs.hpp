@@ -23,28 +23,28 @@ namespace spinslide {
 
 /// The radius R of the thrown disk's contact (m, > 0).
 template <class Real>
-struct disk_radius {
-  using value_type = Real;  ///< the floating type
-  /// Explicit, and not an aggregate: a plain number does not convert.
-  explicit constexpr disk_radius(Real v) : value(v) {}
-  Real value;  ///< R
+struct disk_radius : named_input<disk_radius<Real>, Real> {
+  using named_input<disk_radius<Real>, Real>::named_input;
 };
+/// disk_radius{x} is a disk_radius<double> for a double x.
+template <class Real>
+disk_radius(Real) -> disk_radius<Real>;
 /// The initial speed v0 of a throw (m/s, ≥ 0).
 template <class Real>
-struct initial_speed {
-  using value_type = Real;  ///< the floating type
-  /// Explicit, and not an aggregate: a plain number does not convert.
-  explicit constexpr initial_speed(Real v) : value(v) {}
-  Real value;  ///< v0
+struct initial_speed : named_input<initial_speed<Real>, Real> {
+  using named_input<initial_speed<Real>, Real>::named_input;
 };
+/// initial_speed{x} is a initial_speed<double> for a double x.
+template <class Real>
+initial_speed(Real) -> initial_speed<Real>;
 /// The initial spin ω0 of a throw (rad/s, ≥ 0).
 template <class Real>
-struct initial_spin {
-  using value_type = Real;  ///< the floating type
-  /// Explicit, and not an aggregate: a plain number does not convert.
-  explicit constexpr initial_spin(Real v) : value(v) {}
-  Real value;  ///< ω0
+struct initial_spin : named_input<initial_spin<Real>, Real> {
+  using named_input<initial_spin<Real>, Real>::named_input;
 };
+/// initial_spin{x} is a initial_spin<double> for a double x.
+template <class Real>
+initial_spin(Real) -> initial_spin<Real>;
 
 }  // namespace spinslide
 

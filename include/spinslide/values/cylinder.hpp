@@ -16,6 +16,7 @@
 #define SPINSLIDE_VALUES_CYLINDER_HPP
 
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/values/disk.hpp>
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
@@ -91,14 +92,13 @@ tilt_integrals<Real> tilted_pressure_integrals(Real eps, const Policy& pol = Pol
 /// the unit face (theory §10): p ∝ max(0, n·r − cos θ), n = (cos φ, sin φ)
 /// in the frame x along v, y to the left of the motion for a counter-clockwise
 /// spin; the contact is the segment n·r ≥ cos θ, of half-angle θ.  θ = π is
-/// the whole face under p ∝ 1 + n·r, the last full contact.
+/// the whole face under p ∝ 1 + n·r, the last full contact.  A
+/// friction_result: `force` = (along the velocity, along y) per μN, `torque`
+/// about the normal per μNR (negative: opposes the spin), `ratio` ε; and the
+/// centre of pressure.
 template <class Real>
-struct segment_friction {
-  using value_type = Real;  ///< the floating type
-  Real force_x;             ///< force along the velocity, per μN
-  Real force_y;             ///< force along y (to the left of the motion), per μN
-  Real torque;              ///< torque about the normal, per μNR (negative: opposes the spin)
-  Real centre;              ///< distance of the centre of pressure from the axis, per R (along n)
+struct segment_friction : friction_result<std::array<Real, 2>, Real> {
+  Real centre;  ///< distance of the centre of pressure from the axis, per R (along n)
 };
 
 namespace detail {
@@ -184,7 +184,8 @@ segment_friction<Real> segment_friction_integrals(Real eps, Real theta, Real phi
            load[0];
   };
   const Real fn = part(0), fm = part(1), t = with_torque ? part(2) : Real(0);
-  return {fn * cos(phi) - fm * sin(phi), fn * sin(phi) + fm * cos(phi), t, 1 - load[1] / load[0]};
+  return {{{fn * cos(phi) - fm * sin(phi), fn * sin(phi) + fm * cos(phi)}, t, false, eps},
+          1 - load[1] / load[0]};
 }
 
 template <class Real>
@@ -211,7 +212,7 @@ segment_friction<Real> truncated_pressure_friction(Real eps, Real contact_angle,
       !detail::check(function, "contact_angle", contact_angle, argument_rule::contact_half_angle,
                      &bad, pol) ||
       !detail::check(function, "direction", direction, argument_rule::finite, &bad, pol))
-    return {bad, bad, bad, bad};
+    return {{{bad, bad}, bad, false, bad}, bad};
   return detail::segment_friction_integrals(eps, contact_angle, direction);
 }
 
@@ -221,21 +222,17 @@ segment_friction<Real> truncated_pressure_friction(Real eps, Real contact_angle,
 enum class cylinder_contact { full, partial, tipped };
 
 /// Friction on a cylinder (radius R, centre of mass at height h, uniform
-/// face) sliding along e_v and spinning with sign s = ±1, per unit μN:
-/// along the velocity (`along`), sideways along v × ω (`sideways`), and
-/// the torque about the normal per μNR (`torque`, opposing the spin); the
-/// centre of pressure (x forward, y' to the left of the motion for s = +1,
-/// per R) and the contact.  When `contact` is `tipped` every number is NaN.
+/// face) sliding along e_v and spinning with sign s = ±1, per unit μN: a
+/// friction_result whose `force` is (along the velocity, sideways along
+/// v × ω), whose `torque` is about the normal per μNR (opposing the spin)
+/// and whose `ratio` is ε; the centre of pressure (x forward, y' to the left
+/// of the motion for s = +1, per R) and the contact.  When `contact` is
+/// `tipped` every number is NaN.
 template <class Real>
-struct cylinder_friction {
-  using value_type = Real;   ///< the floating type
-  Real along;                ///< force along the velocity, per μN
-  Real sideways;             ///< force along v × ω, per μN
-  Real torque;               ///< torque about the normal, per μNR, opposing the spin
-  Real centre_forward;       ///< centre of pressure along the velocity, per R
-  Real centre_sideways;      ///< centre of pressure along y', per R
-  Real contact_angle;        ///< half-angle θ of the contact segment (π: the whole face)
-  cylinder_contact contact;  ///< full, partial (the rear lifts off) or tipped
+struct cylinder_friction : friction_result<std::array<Real, 2>, Real> {
+  std::array<Real, 2> centre;  ///< centre of pressure (forward, along y'), per R
+  Real contact_angle;          ///< half-angle θ of the contact segment (π: the whole face)
+  cylinder_contact contact;    ///< full, partial (the rear lifts off) or tipped
 };
 
 namespace detail {
@@ -258,7 +255,7 @@ branch_point<Real> branch_at(Real eps, Real theta, const Policy& /*pol: digits*/
   const auto load = segment_load(theta);
   auto cross = [&](Real phi) {
     const auto f = segment_friction_integrals(eps, theta, phi, load, false);
-    return Real(sin(phi) * f.force_x - cos(phi) * f.force_y);  // n × (−F)
+    return Real(sin(phi) * f.force[0] - cos(phi) * f.force[1]);  // n × (−F)
   };
   branch_point<Real> b{theta, 0, 0, {}, false};
   Real hi = 0, f_hi = cross(Real(0));
@@ -275,8 +272,8 @@ branch_point<Real> branch_at(Real eps, Real theta, const Policy& /*pol: digits*/
         iterations);
     b.phi = (r.first + r.second) / 2;
     b.f = segment_friction_integrals(eps, theta, b.phi, load);
-    b.ok = cos(b.phi) * b.f.force_x + sin(b.phi) * b.f.force_y < 0;  // n · F < 0
-    b.lambda = b.f.centre / boost::math::hypot(b.f.force_x, b.f.force_y);
+    b.ok = cos(b.phi) * b.f.force[0] + sin(b.phi) * b.f.force[1] < 0;  // n · F < 0
+    b.lambda = b.f.centre / boost::math::hypot(b.f.force[0], b.f.force[1]);
     return b;
   }
   return b;
@@ -340,10 +337,18 @@ bool bracket_branch(Real eps, Real target, Real& lo, Real& hi, const Policy& pol
   return true;
 }
 
+// The cylinder's result from its numbers, at ratio ε.
 template <class Real>
-cylinder_friction<Real> tipped_cylinder() {
+cylinder_friction<Real> cylinder_result(Real eps, const std::array<Real, 2>& force, Real torque,
+                                        const std::array<Real, 2>& centre, Real contact_angle,
+                                        cylinder_contact contact) {
+  return {{force, torque, false, eps}, centre, contact_angle, contact};
+}
+
+template <class Real>
+cylinder_friction<Real> tipped_cylinder(Real eps) {
   const Real nan = std::numeric_limits<Real>::quiet_NaN();
-  return {nan, nan, nan, nan, nan, nan, cylinder_contact::tipped};
+  return cylinder_result(eps, {nan, nan}, nan, {nan, nan}, nan, cylinder_contact::tipped);
 }
 
 /// The root of `excess` in [lo, hi] by TOMS 748, where it falls from at_lo > 0 to
@@ -364,7 +369,7 @@ template <class Real, class Policy>
 cylinder_friction<Real> partial_contact(Real eps, Real lambda, const Policy& pol) {
   BOOST_MATH_STD_USING
   Real lo = 0, hi = 0;
-  if (!bracket_branch(eps, lambda, lo, hi, pol)) return tipped_cylinder<Real>();
+  if (!bracket_branch(eps, lambda, lo, hi, pol)) return tipped_cylinder(eps);
   auto excess = [&](Real theta) { return branch_at(eps, theta, pol).lambda - lambda; };
   const Real at_lo = excess(lo), at_hi = excess(hi);
   // Just past lift-off the closed form's full-contact test and the branch's
@@ -376,23 +381,21 @@ cylinder_friction<Real> partial_contact(Real eps, Real lambda, const Policy& pol
                      : !(at_lo > 0) ? lo
                                     : root_between(excess, lo, hi, at_lo, at_hi, pol);
   const auto b = branch_at(eps, theta, pol);
-  return {b.f.force_x,
-          -b.f.force_y,
-          b.f.torque,
-          b.f.centre * cos(b.phi),
-          b.f.centre * sin(b.phi),
-          b.theta,
-          theta == boost::math::constants::pi<Real>() ? cylinder_contact::full
-                                                      : cylinder_contact::partial};
+  return cylinder_result(eps, {b.f.force[0], -b.f.force[1]}, b.f.torque,
+                         {b.f.centre * cos(b.phi), b.f.centre * sin(b.phi)}, b.theta,
+                         theta == boost::math::constants::pi<Real>() ? cylinder_contact::full
+                                                                     : cylinder_contact::partial);
 }
 
 /// Pure sliding (ε = ∞): F = −e_v whatever the pressure, so the centre of
 /// pressure is λ e_v; the segment with ζ(θ) = λ.
 template <class Real, class Policy>
-cylinder_friction<Real> sliding_cylinder(Real lambda, const Policy& /*pol: digits*/) {
+cylinder_friction<Real> sliding_cylinder(Real eps, Real lambda, const Policy& /*pol: digits*/) {
   const Real pi = boost::math::constants::pi<Real>();
-  if (lambda <= Real(0.25)) return {-1, 0, 0, lambda, 0, pi, cylinder_contact::full};
-  if (lambda >= 1) return tipped_cylinder<Real>();
+  if (lambda <= Real(0.25))
+    return cylinder_result(eps, {Real(-1), Real(0)}, Real(0), {lambda, Real(0)}, pi,
+                           cylinder_contact::full);
+  if (lambda >= 1) return tipped_cylinder(eps);
   auto excess = [&](Real theta) {
     const auto load = segment_load(theta);
     return 1 - load[1] / load[0] - lambda;
@@ -402,7 +405,8 @@ cylinder_friction<Real> sliding_cylinder(Real lambda, const Policy& /*pol: digit
       excess, tipping_angle<Real>(), pi,
       boost::math::tools::eps_tolerance<Real>(boost::math::policies::digits<Real, Policy>() - 3),
       iterations);
-  return {-1, 0, 0, lambda, 0, (r.first + r.second) / 2, cylinder_contact::partial};
+  return cylinder_result(eps, {Real(-1), Real(0)}, Real(0), {lambda, Real(0)},
+                         Real((r.first + r.second) / 2), cylinder_contact::partial);
 }
 
 }  // namespace detail
@@ -438,19 +442,22 @@ cylinder_friction<Real> tilted_cylinder_friction(Real eps, Real height, Real rad
       !check(function, "radius", radius, argument_rule::finite_positive, &bad, pol) ||
       !check(function, "friction_coefficient", friction_coefficient,
              argument_rule::finite_non_negative, &bad, pol))
-    return {bad, bad, bad, bad, bad, bad, cylinder_contact::full};
+    return detail::cylinder_result(bad, {bad, bad}, bad, {bad, bad}, bad, cylinder_contact::full);
   const Real pi = boost::math::constants::pi<Real>();
   const auto ft = force_torque(eps, pol);
   const Real lambda = friction_coefficient * height / radius, kappa = 4 * lambda;
-  if (kappa == 0) return {-ft.force, 0, -ft.torque, 0, 0, pi, cylinder_contact::full};
-  if (eps > 1 / boost::math::tools::epsilon<Real>()) return detail::sliding_cylinder(lambda, pol);
+  if (kappa == 0)
+    return detail::cylinder_result(eps, {Real(-ft.force), Real(0)}, Real(-ft.torque),
+                                   {Real(0), Real(0)}, pi, cylinder_contact::full);
+  if (eps > 1 / boost::math::tools::epsilon<Real>())
+    return detail::sliding_cylinder(eps, lambda, pol);
   const auto I = tilted_pressure_integrals(eps, pol);
   const Real det = 1 - kappa * kappa * I.A * I.B;
   const Real alpha = kappa * ft.force / det, beta = kappa * I.B * alpha;
   if (det > 0 && alpha * alpha + beta * beta <= 1)
-    return {
-        -(ft.force + beta * I.A), alpha * I.B, -(ft.torque + beta * I.C), alpha / 4, beta / 4, pi,
-        cylinder_contact::full};
+    return detail::cylinder_result(eps, {Real(-(ft.force + beta * I.A)), Real(alpha * I.B)},
+                                   Real(-(ft.torque + beta * I.C)),
+                                   {Real(alpha / 4), Real(beta / 4)}, pi, cylinder_contact::full);
   return detail::partial_contact(eps, lambda, pol);
 }
 

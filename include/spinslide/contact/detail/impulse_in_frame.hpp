@@ -9,18 +9,19 @@
 #ifndef SPINSLIDE_CONTACT_DETAIL_IMPULSE_IN_FRAME_HPP
 #define SPINSLIDE_CONTACT_DETAIL_IMPULSE_IN_FRAME_HPP
 
+#include <spinslide/base/detail/vector_access.hpp>
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/contact/detail/impulse_frame.hpp>
 #include <spinslide/contact/detail/matrix3.hpp>
 #include <spinslide/contact/detail/metric_projector.hpp>
 #include <spinslide/contact/detail/point_friction.hpp>
 #include <spinslide/contact/detail/torque_scaled.hpp>
-#include <spinslide/contact/detail/vector_access.hpp>
 #include <spinslide/contact/planar_metric.hpp>
-#include <spinslide/contact/projection_results.hpp>
 
 #include <boost/math/tools/precision.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -89,10 +90,11 @@ struct law_inputs {
 // from `start` (in the profile's), or for a thin set without one from
 // thin_start.
 template <class Profile, class Real = typename Profile::value_type>
-wrench_projection<Real> project_in_frame(const Profile& profile, const impulse_frame<Real>& frame,
-                                         const vector3<Real>& target,
-                                         const curve_point<Real>& start,
-                                         const law_inputs<Real>& law) {
+friction_result<std::array<Real, 2>, Real> project_in_frame(const Profile& profile,
+                                                            const impulse_frame<Real>& frame,
+                                                            const vector3<Real>& target,
+                                                            const curve_point<Real>& start,
+                                                            const law_inputs<Real>& law) {
   const Real s0 = start.ratio;
   // The start and the answer between the units: ε' = kε, 𝓣' = k𝓣, 𝓕′' = 𝓕′/k.
   const Real k = frame.k;
@@ -103,11 +105,13 @@ wrench_projection<Real> project_in_frame(const Profile& profile, const impulse_f
                               start.curvature / (k * k)}
           : curve_point<Real>{thin_start(profile, frame, law.w, law.slip, law.load)};
   const torque_scaled<Profile> curve(profile, k);
-  wrench_projection<Real> r = metric_projector<torque_scaled<Profile>>(
+  friction_result<std::array<Real, 2>, Real> r = metric_projector<torque_scaled<Profile>>(
       curve, target, frame.metric, frame.inverse)(from.ratio, &from);
   if (r.sticking) return r;
-  r.point.torque /= k;
+  r.torque /= k;
   r.ratio /= k;
+  r.point.ratio /= k;
+  r.point.torque /= k;
   return r;
 }
 
@@ -116,9 +120,9 @@ wrench_projection<Real> project_in_frame(const Profile& profile, const impulse_f
 // ε = |v⁺|/(a|ω⁺|) (`out` carries the result's other fields).  Sticking only
 // where the spin is 0 too.
 template <class Vec2, class Real>
-friction_result<Vec2, Real> point_limit_result(friction_result<Vec2, Real> out,
-                                               const planar_metric<Real>& w,
-                                               const vector3<Real>& slip, Real a, Real load) {
+impulse_result<Vec2, Real> point_limit_result(impulse_result<Vec2, Real> out,
+                                              const planar_metric<Real>& w,
+                                              const vector3<Real>& slip, Real a, Real load) {
   const point_impulse<Real> p = point_friction(w.entries(), slip[0], slip[1], load);
   const auto& m = w.entries();
   const Real spin = slip[2] + m[2][0] * p.force[0] + m[2][1] * p.force[1];

@@ -31,7 +31,7 @@
 #define SPINSLIDE_CONTACT_DETAIL_LIMIT_PROJECTOR_HPP
 
 #include <spinslide/base/detail/product.hpp>
-#include <spinslide/contact/projection_results.hpp>
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/values/detail/force_slope.hpp>
 #include <spinslide/values/force_torque_result.hpp>
 
@@ -65,6 +65,7 @@ bool in_sticking_triangle(Real fx, Real fy, Real t, Real top) {
 template <class Profile>
 class limit_projector {
   using Real = typename Profile::value_type;
+  using projection = friction_result<Real, Real>;  // the family's scalar shape
 
  public:
   // The point (x, y) = (point.force, point.torque) ≥ 0 and the weight w =
@@ -78,7 +79,7 @@ class limit_projector {
 
   // The projection, searching from `start` (a ratio; 0 or ∞: no guess), or
   // from the curve point `from` (at the ratio `start`) if given.
-  limit_projection<Real> operator()(Real start, const curve_point<Real>* from = nullptr) {
+  projection operator()(Real start, const curve_point<Real>* from = nullptr) {
     if (in_sticking_triangle(x_, y_, top_)) return sticking();
     if (y_ == 0) return on_curve(inf(), {Real(1), Real(0)});  // x > 1: the corner (1, 0)
     if (x_ == 0) return on_curve(Real(0), {Real(0), top_});  // y > ⟨r⟩: the corner (0, ⟨r⟩)
@@ -88,8 +89,8 @@ class limit_projector {
  private:
   // Apart from the tests above, so that a caller inlines those (a sticking
   // contact, the common case, costs the triangle's test) and calls this.
-  limit_projection<Real> project(Real start, const curve_point<Real>* from) {
-    limit_projection<Real> warm{};
+  projection project(Real start, const curve_point<Real>* from) {
+    projection warm{};
     if (warm_steps(start, from, warm)) return warm;
     lo_ = {Real(0), {Real(0), top_}, x_, Real(0)};
     hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0)};
@@ -156,7 +157,7 @@ class limit_projector {
   // that search does (the same sticking test on every sample, a convergence
   // test for the step's order, the advance), so the result is the same to
   // rounding.
-  bool warm_steps(Real& start, const curve_point<Real>* from, limit_projection<Real>& result) {
+  bool warm_steps(Real& start, const curve_point<Real>* from, projection& result) {
     if constexpr (fused_value_slope<Profile>::value || has_force_slope<Profile>()) {
       if (!(well_scaled(start) && well_scaled(w_) && x_ <= scale_limit() && y_ <= scale_limit()))
         return false;
@@ -192,8 +193,7 @@ class limit_projector {
   enum class warm_outcome { done, stepped, given_up };
   // One warm step from the sample a: done (result set), stepped (`next` and
   // `last_h` advanced) or given up.
-  warm_outcome warm_iteration(const warm_sample& a, Real& last_h, Real& next,
-                              limit_projection<Real>& result) {
+  warm_outcome warm_iteration(const warm_sample& a, Real& last_h, Real& next, projection& result) {
     using std::fabs;
     if (inside_quadrilateral(a.ft)) return result = sticking(), warm_outcome::done;
     if (a.h == 0) return result = on_sample(a, a.slope, a.curvature), warm_outcome::done;
@@ -443,14 +443,14 @@ class limit_projector {
 
   // A converged sample: sticking after all (inside its quadrilateral), else
   // the result, with 𝓕′ and 𝓕″ there as known.
-  limit_projection<Real> classify(const sample& a, Real slope, Real curvature) const {
+  projection classify(const sample& a, Real slope, Real curvature) const {
     if (inside_quadrilateral(a.ft)) return sticking();
     return on_sample(a, slope, curvature);
   }
 
   // The nearest point of the chord between the bracket's sides (an edge of
   // L where 𝓕 jumps, or the last stretch to an end).
-  limit_projection<Real> on_edge() const {
+  projection on_edge() const {
     using std::sqrt;
     const Real df = hi_.ft.force - lo_.ft.force, dt = hi_.ft.torque - lo_.ft.torque;
     const Real px = x_ - lo_.ft.force, py = y_ - lo_.ft.torque;
@@ -474,14 +474,13 @@ class limit_projector {
     return on_curve(ratio, {lo_.ft.force + lambda * df, lo_.ft.torque + lambda * dt});
   }
 
-  limit_projection<Real> sticking() const {
-    return {x_, y_, true, std::numeric_limits<Real>::quiet_NaN()};
+  projection sticking() const { return {x_, y_, true, std::numeric_limits<Real>::quiet_NaN()}; }
+  static projection on_curve(Real ratio, const force_torque_result<Real>& c) {
+    return {c.force, c.torque, false, ratio, {ratio, c.force, c.torque}};
   }
-  static limit_projection<Real> on_curve(Real ratio, const force_torque_result<Real>& c) {
-    return {c.force, c.torque, false, ratio};
-  }
-  static limit_projection<Real> on_sample(const sample& a, Real slope, Real curvature) {
-    return {a.ft.force, a.ft.torque, false, a.eps, slope, curvature};
+  static projection on_sample(const sample& a, Real slope, Real curvature) {
+    return {
+        a.ft.force, a.ft.torque, false, a.eps, {a.eps, a.ft.force, a.ft.torque, slope, curvature}};
   }
 
   const Profile& profile_;

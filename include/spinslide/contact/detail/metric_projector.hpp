@@ -24,17 +24,18 @@
 #ifndef SPINSLIDE_CONTACT_DETAIL_METRIC_PROJECTOR_HPP
 #define SPINSLIDE_CONTACT_DETAIL_METRIC_PROJECTOR_HPP
 
+#include <spinslide/base/friction_result.hpp>
 #include <spinslide/contact/detail/dissipation_hessian.hpp>
 #include <spinslide/contact/detail/limit_projector.hpp>
 #include <spinslide/contact/detail/matrix3.hpp>
 #include <spinslide/contact/planar_metric.hpp>
-#include <spinslide/contact/projection_results.hpp>
 #include <spinslide/values/detail/force_slope.hpp>
 
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/precision.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -47,6 +48,7 @@ class metric_projector {
   using Real = typename Profile::value_type;
   using vec = vector3<Real>;
   using point_data = slip_point<Real>;
+  using projection = friction_result<std::array<Real, 2>, Real>;  // the family's 2-D shape
 
  public:
   // z finite (checked by the caller); `metric` M and `inverse` M⁻¹, symmetric
@@ -68,7 +70,7 @@ class metric_projector {
   // The projection; `start`: a ratio to search from (0 or ∞: none), or the
   // curve point `from` (at the ratio `start`, its 𝓕 and 𝓣 finite) that the
   // contact's last projection left, whose values save an evaluation.
-  wrench_projection<Real> operator()(Real start, const curve_point<Real>* from = nullptr) {
+  projection operator()(Real start, const curve_point<Real>* from = nullptr) {
     using std::fabs;
     if (largest(z_) > far()) return support_point();
     // With a start: if z lies beyond the support plane of L₃ with the normal
@@ -99,9 +101,9 @@ class metric_projector {
     }
     // Otherwise the 2-D projection decides sticking on the magnitudes and
     // gives the curve point, along z's direction, to start from.
-    const limit_projection<Real> flat =
+    const friction_result<Real, Real> flat =
         limit_projector<Profile>(p_, {length(z_[0], z_[1]), fabs(z_[2])}, torque_weight())(start);
-    if (flat.sticking) return {{z_[0], z_[1], z_[2]}, true, std::numeric_limits<Real>::quiet_NaN()};
+    if (flat.sticking) return {{z_[0], z_[1]}, z_[2], true};
     const ray r = normal_ray(flat.ratio, {flat.force, flat.torque});
     if (r.resolved) {
       const point_data x = ray_start(r);
@@ -129,7 +131,7 @@ class metric_projector {
   // For z far from L₃: the point of L₃ whose outward normal is along
   // M(z − p) ≈ Mz, relatively within |p|/|z|: at the ratio
   // ε = |(Mz)_f|/|(Mz)_t| along (Mz)_f's direction and (Mz)_t's sign.
-  wrench_projection<Real> support_point() const {
+  projection support_point() const {
     const Real scale = largest(z_);
     const vec u = multiply(m_, vec{z_[0] / scale, z_[1] / scale, z_[2] / scale});
     using std::fabs;
@@ -138,9 +140,8 @@ class metric_projector {
     const force_torque_result<Real> c = p_.force_torque(along > 0 ? eps : Real(0));
     const Real fx = along > 0 ? Real(u[0] / along) : Real(0);
     const Real fy = along > 0 ? Real(u[1] / along) : Real(0);
-    return {{c.force * fx, c.force * fy, u[2] < 0 ? Real(-c.torque) : c.torque},
-            false,
-            along > 0 ? eps : Real(0)};
+    return slip({c.force * fx, c.force * fy, u[2] < 0 ? Real(-c.torque) : c.torque},
+                along > 0 ? eps : Real(0));
   }
 
   // The outward normal n at the curve point of ratio ε along z's force
@@ -172,9 +173,8 @@ class metric_projector {
     return r;
   }
 
-  wrench_projection<Real> result_on_ray(const ray& r, const force_torque_result<Real>& c,
-                                        Real eps) const {
-    return {{c.force * r.dx, c.force * r.dy, z_[2] < 0 ? Real(-c.torque) : c.torque}, false, eps};
+  projection result_on_ray(const ray& r, const force_torque_result<Real>& c, Real eps) const {
+    return slip({c.force * r.dx, c.force * r.dy, z_[2] < 0 ? Real(-c.torque) : c.torque}, eps);
   }
 
   // The torque's weight relative to the force's for the 2-D start and test
@@ -258,7 +258,7 @@ class metric_projector {
   // max_newton_iterations the last iterate is the answer.  A step within
   // first_order() of s ends the iteration without evaluating the profile
   // again (last_step).
-  wrench_projection<Real> newton(point_data x) const {
+  projection newton(point_data x) const {
     point_data previous{};
     for (int iteration = 0; iteration < max_newton_iterations; ++iteration) {
       const vec g = gradient(x);
@@ -417,19 +417,24 @@ class metric_projector {
   // The answer after a step δ within first_order() of x: s + δ, and the
   // curve point ∇D(s + δ) as ∇D(s) + ∇²D(s)δ (`hd` = ∇²D(s)), which is
   // M(z − p) = s + δ exactly where the step solved Newton's equation.
-  wrench_projection<Real> last_step(const point_data& x, const matrix3<Real>& hd,
-                                    const vec& step) const {
+  projection last_step(const point_data& x, const matrix3<Real>& hd, const vec& step) const {
     using std::fabs;
     const vec s = shifted(x.s, step, Real(1));
     const vec dp = multiply(hd, step);
     const Real along_s = length(s[0], s[1]), across_s = fabs(s[2]);
-    return {{x.grad_d[0] + dp[0], x.grad_d[1] + dp[1], x.grad_d[2] + dp[2]},
-            false,
-            Real(along_s / across_s)};
+    return slip({x.grad_d[0] + dp[0], x.grad_d[1] + dp[1], x.grad_d[2] + dp[2]},
+                Real(along_s / across_s));
   }
 
-  static wrench_projection<Real> result(const point_data& d) {
-    return {{d.grad_d[0], d.grad_d[1], d.grad_d[2]}, false, d.eps};
+  static projection result(const point_data& d) { return slip(d.grad_d, d.eps); }
+
+  // A slip to the curve point p = (force, torque) at ratio ε, with the curve
+  // point the contact's next projection starts from (𝓕 = |p's force|, 𝓣 =
+  // |p's torque|; 𝓕′ and 𝓕″ unknown).
+  static projection slip(const vec& p, Real eps) {
+    using std::fabs;
+    using std::hypot;
+    return {{p[0], p[1]}, p[2], false, eps, {eps, Real(hypot(p[0], p[1])), Real(fabs(p[2]))}};
   }
 
   const Profile& p_;

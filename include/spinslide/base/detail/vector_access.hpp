@@ -4,8 +4,8 @@
 //
 // Reading and writing the components of users' vector types, for the contact
 // law (contact_law.hpp): operator[] or members x, y, z.
-#ifndef SPINSLIDE_CONTACT_DETAIL_VECTOR_ACCESS_HPP
-#define SPINSLIDE_CONTACT_DETAIL_VECTOR_ACCESS_HPP
+#ifndef SPINSLIDE_BASE_DETAIL_VECTOR_ACCESS_HPP
+#define SPINSLIDE_BASE_DETAIL_VECTOR_ACCESS_HPP
 
 #include <array>
 #include <tuple>
@@ -114,4 +114,4 @@ void write(V& v, const std::array<Real, 3>& x) {
 }  // namespace detail
 }  // namespace spinslide
 
-#endif  // SPINSLIDE_CONTACT_DETAIL_VECTOR_ACCESS_HPP
+#endif  // SPINSLIDE_BASE_DETAIL_VECTOR_ACCESS_HPP
