@@ -21,7 +21,7 @@
 #include <spinslide/base/detail/vector_access.hpp>
 #include <spinslide/base/friction_result.hpp>
 #include <spinslide/contact/contact_inputs.hpp>
-#include <spinslide/contact/detail/vector_math.hpp>
+#include <spinslide/contact/detail/vector3.hpp>
 #include <spinslide/values/profile.hpp>
 #include <spinslide/values/profile_concept.hpp>
 
@@ -134,16 +134,9 @@ class contact_law {
         "spinslide::contact_law: the velocity, angular velocity and normal must be "
         "3-component vector classes (operator[] or members x, y, z), not pointers or "
         "C arrays: copy a raw array such as MuJoCo's mjtNum* into a std::array<double, 3>");
-    const Real n[3] = {static_cast<Real>(detail::get<0>(normal.value)),
-                       static_cast<Real>(detail::get<1>(normal.value)),
-                       static_cast<Real>(detail::get<2>(normal.value))};
-    const Real w = detail::vector_dot({static_cast<Real>(detail::get<0>(angular_velocity)),
-                                       static_cast<Real>(detail::get<1>(angular_velocity)),
-                                       static_cast<Real>(detail::get<2>(angular_velocity))},
-                                      n);
-    Real v[3] = {static_cast<Real>(detail::get<0>(velocity)),
-                 static_cast<Real>(detail::get<1>(velocity)),
-                 static_cast<Real>(detail::get<2>(velocity))};
+    const detail::vector3<Real> n = detail::read<3, Real>(normal.value);
+    const Real w = detail::vector_dot(detail::read<3, Real>(angular_velocity), n);
+    detail::vector3<Real> v = detail::read<3, Real>(velocity);
     const Real speed = detail::tangential_part(v, n);  // the force is along −v_t
     Real f, t;
     friction_result<Vec3, Vec3> out{Vec3{}, Vec3{}};
@@ -152,7 +145,7 @@ class contact_law {
     // NaN f: a domain error, through a policy that does not throw.
     // −f times the unit vector v/|v| (f/|v| alone overflows for a tiny |v|).
     detail::unit_direction(v, speed);
-    for (int i = 0; i < 3; ++i) v[i] = (boost::math::isnan)(f) ? f : Real(-f * v[i]);
+    for (Real& vi : v) vi = (boost::math::isnan)(f) ? f : Real(-f * vi);
     detail::set<0>(out.force, v[0]);
     detail::set<1>(out.force, v[1]);
     detail::set<2>(out.force, v[2]);
@@ -237,7 +230,7 @@ class contact_law {
       fx = fy = f;
       return;
     }
-    Real u[3] = {vx, vy, 0};
+    detail::vector3<Real> u{vx, vy, Real(0)};
     detail::unit_direction(u, speed);
     fx = -f * u[0];
     fy = -f * u[1];

@@ -83,7 +83,7 @@ struct joint_pair {
   /// The pair's settings and its kept curve point (updated by the solve).
   std::reference_wrapper<spinslide::pair_friction> friction;
   /// The pair's slip (v_x, v_y, ω) at the end of the step without any of the
-  /// pairs' friction.
+  /// pairs' friction (a detail::vector3<double>, the library's 3-vector).
   std::array<double, 3> free_motion{};
   /// Λ, the normal impulse of the step.
   normal_impulse<double> normal{0};
@@ -194,11 +194,11 @@ class joint_solver {
   void update(std::vector<joint_pair>& pairs, const pair_coupling& w, std::size_t i) {
     joint_pair& p = pairs[i];
     const auto mine = detail::multiply(w.at(i, i), p.impulse);
-    const std::array<double, 3> s{slip_[i][0] - mine[0], slip_[i][1] - mine[1],
-                                  slip_[i][2] - mine[2]};
+    const detail::vector3<double> s{slip_[i][0] - mine[0], slip_[i][1] - mine[1],
+                                    slip_[i][2] - mine[2]};
     const auto r = p.friction.get().impulse({s[0], s[1]}, s[2], own_[i], p.normal, p.penetration);
-    const std::array<double, 3> step{r.force[0] - p.impulse[0], r.force[1] - p.impulse[1],
-                                     r.torque - p.impulse[2]};
+    const detail::vector3<double> step{r.force[0] - p.impulse[0], r.force[1] - p.impulse[1],
+                                       r.torque - p.impulse[2]};
     for (std::size_t j = 0; j < pairs.size(); ++j) {
       const auto moved = detail::multiply(w.at(j, i), step);
       for (std::size_t k = 0; k < 3; ++k) slip_[j][k] += moved[k];
@@ -212,15 +212,15 @@ class joint_solver {
   double moved() const {
     double sum = 0;
     for (std::size_t i = 0; i < slip_.size(); ++i) {
-      const std::array<double, 3> d{slip_[i][0] - before_[i][0], slip_[i][1] - before_[i][1],
-                                    slip_[i][2] - before_[i][2]};
+      const detail::vector3<double> d{slip_[i][0] - before_[i][0], slip_[i][1] - before_[i][1],
+                                      slip_[i][2] - before_[i][2]};
       sum += detail::dot(d, detail::multiply(own_[i].inverse(), d));
     }
     return sum;
   }
 
   std::vector<planar_metric<double>> own_;  // each pair's own block, conditioned
-  std::vector<std::array<double, 3>> slip_, before_;
+  std::vector<detail::vector3<double>> slip_, before_;
 };
 
 /// joint_solver::solve with a workspace of its own, for one call.

@@ -2,14 +2,14 @@
 //  Distributed under the Boost Software License, Version 1.0.
 //  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
 //
-// 3-vectors and symmetric 3×3 matrices over the tangent plane's (x, y) and the
-// normal spin, for the metric projection and the impulse law: products,
-// Cholesky factorization and solves, lengths.  Small and fixed-size: no
+// Symmetric 3×3 matrices over the library's 3-vectors (vector3.hpp), for the
+// metric projection, the impulse law and the joint solve: products,
+// Cholesky factorization and solves, conditioning.  Small and fixed-size: no
 // allocation.
 #ifndef SPINSLIDE_CONTACT_DETAIL_MATRIX3_HPP
 #define SPINSLIDE_CONTACT_DETAIL_MATRIX3_HPP
 
-#include <boost/math/tools/precision.hpp>
+#include <spinslide/contact/detail/vector3.hpp>
 
 #include <algorithm>
 #include <array>
@@ -21,8 +21,6 @@ namespace spinslide {
 namespace detail {
 
 template <class Real>
-using vector3 = std::array<Real, 3>;
-template <class Real>
 using matrix3 = std::array<std::array<Real, 3>, 3>;
 
 template <class Real>
@@ -30,37 +28,6 @@ vector3<Real> multiply(const matrix3<Real>& a, const vector3<Real>& x) {
   vector3<Real> y{};
   for (std::size_t i = 0; i < 3; ++i) y[i] = a[i][0] * x[0] + a[i][1] * x[1] + a[i][2] * x[2];
   return y;
-}
-
-template <class Real>
-Real dot(const vector3<Real>& a, const vector3<Real>& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-// √(x² + y²), by hypot only where the squares could over- or underflow
-// (outside the square roots of the normal numbers, with a margin).
-template <class Real>
-Real length(Real x, Real y) {
-  using std::fabs;
-  using std::hypot;
-  using std::sqrt;
-  static const Real low = 16 * sqrt(boost::math::tools::min_value<Real>());
-  static const Real high = sqrt(boost::math::tools::max_value<Real>()) / 16;
-  const Real big = (std::max)(fabs(x), fabs(y));
-  return big > low && big < high ? Real(sqrt(x * x + y * y)) : Real(hypot(x, y));
-}
-
-// max |vᵢ|.
-template <class Real>
-Real largest(const vector3<Real>& v) {
-  using std::fabs;
-  return (std::max)({Real(fabs(v[0])), Real(fabs(v[1])), Real(fabs(v[2]))});
-}
-
-// s + t·step.
-template <class Real>
-vector3<Real> shifted(const vector3<Real>& s, const vector3<Real>& step, Real t) {
-  return {s[0] + t * step[0], s[1] + t * step[1], s[2] + t * step[2]};
 }
 
 // ‖A‖_F, the Frobenius norm.

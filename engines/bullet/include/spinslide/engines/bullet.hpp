@@ -29,6 +29,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/contact/detail/vector3.hpp>
 #include <spinslide/contact/joint_pairs.hpp>
 #include <spinslide/contact/pair_friction.hpp>
 #include <spinslide/contact/pair_report.hpp>
@@ -238,7 +239,7 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
   }
 
   // The patch's slip (v·t1, v·t2, spin about n) before the friction.
-  static std::array<double, 3> free_motion(const patch& p) {
+  static detail::vector3<double> free_motion(const patch& p) {
     const btVector3& c = p.sum.centre;
     const btVector3 slip = velocity_at(p.a, c) - velocity_at(p.b, c);
     return {static_cast<double>(slip.dot(p.t[0])), static_cast<double>(slip.dot(p.t[1])),
@@ -404,7 +405,7 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
     return r;
   }
 
-  static std::array<double, 3> vector(const btVector3& v) {
+  static detail::vector3<double> vector(const btVector3& v) {
     return {static_cast<double>(v.x()), static_cast<double>(v.y()), static_cast<double>(v.z())};
   }
 

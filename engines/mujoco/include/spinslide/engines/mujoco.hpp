@@ -38,6 +38,7 @@
 
 #include <mujoco/mujoco.h>
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/contact/detail/vector3.hpp>
 #include <spinslide/contact/joint_pairs.hpp>
 #include <spinslide/contact/pair_friction.hpp>
 #include <spinslide/contact/pair_report.hpp>
@@ -175,7 +176,7 @@ class coupled_friction {
   const std::vector<double>& generalized_force() const { return generalized_; }
 
  private:
-  using vec3 = std::array<double, 3>;
+  using vec3 = detail::vector3<double>;  // the library's 3-vector
   struct coupled_pair {
     coupled_pair(int first, int second, const spinslide::pair_friction& f)
         : a(first), b(second), friction(f) {}
@@ -419,13 +420,10 @@ class coupled_friction {
   // A right-handed orthonormal (t1, t2, n).
   static std::array<vec3, 3> tangent_axes(const vec3& n) {
     const vec3 helper = std::fabs(n[0]) < 0.6 ? vec3{1, 0, 0} : vec3{0, 1, 0};
-    vec3 t1{helper[1] * n[2] - helper[2] * n[1], helper[2] * n[0] - helper[0] * n[2],
-            helper[0] * n[1] - helper[1] * n[0]};
-    const double length = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
+    vec3 t1 = detail::cross(helper, n);
+    const double length = std::sqrt(detail::dot(t1, t1));
     for (double& x : t1) x /= length;
-    const vec3 t2{n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2],
-                  n[0] * t1[1] - n[1] * t1[0]};
-    return {t1, t2, n};
+    return {t1, detail::cross(n, t1), n};
   }
 
   const mjModel* model_;
