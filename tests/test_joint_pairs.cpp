@@ -31,7 +31,7 @@ using spinslide::pair_friction;
 using matrix = detail::matrix3<double>;
 using vec3 = std::array<double, 3>;
 
-pair_friction disk_pair(double a, double mu) {
+pair_friction<double> disk_pair(double a, double mu) {
   return pair_friction(uniform_disk<>(), patch_radius<double>{a}, friction_coefficient<double>{mu});
 }
 
@@ -44,7 +44,7 @@ TEST(JointPairs, TwoPairsAtOnePointAreOnePairWithBothLoads) {
     pair_coupling w(2);
     for (std::size_t i = 0; i < 2; ++i)
       for (std::size_t j = 0; j < 2; ++j) w.at(i, j) = a;
-    pair_friction first = disk_pair(0.1, 0.4), second = disk_pair(0.1, 0.4);
+    pair_friction<double> first = disk_pair(0.1, 0.4), second = disk_pair(0.1, 0.4);
     const double size = std::exp(3 * u(rng) - 2);  // from mostly sticking to mostly slipping
     const vec3 s{size * u(rng), size * u(rng), 5 * size * u(rng)};
     const double l1 = std::exp(u(rng)), l2 = std::exp(u(rng));
@@ -79,7 +79,7 @@ TEST(JointPairs, PairsThatShareNoBodyAreEachTheirOwnLaw) {
   pair_coupling w(2);
   w.at(0, 0) = a;
   w.at(1, 1) = b;
-  pair_friction first = disk_pair(0.05, 0.3), second = disk_pair(0.2, 0.6);
+  pair_friction<double> first = disk_pair(0.05, 0.3), second = disk_pair(0.2, 0.6);
   const vec3 s{0.4, -0.2, 3}, t{-0.1, 0.5, -2};
   std::vector<joint_pair> pairs{{std::ref(first), s, normal_impulse<double>{0.3}, 0},
                                 {std::ref(second), t, normal_impulse<double>{0.2}, 0}};
@@ -143,7 +143,7 @@ TEST(JointPairs, NoFeasibleNeighbourLeavesLessEnergy) {
   std::uniform_real_distribution<double> u(-1, 1), u01(0, 1);
   for (int n = 0; n < 40; ++n) {
     const pair_coupling w = three_pairs_on_one_body(rng);
-    std::vector<pair_friction> settings{disk_pair(0.3, 0.5), disk_pair(0.3, 0.5),
+    std::vector<pair_friction<double>> settings{disk_pair(0.3, 0.5), disk_pair(0.3, 0.5),
                                         disk_pair(0.3, 0.5)};
     std::vector<joint_pair> pairs;
     std::vector<vec3> s;
@@ -191,7 +191,7 @@ TEST(JointPairs, AnyStartEndsAtTheSameMotion) {
   std::uniform_real_distribution<double> u(-1, 1);
   for (int n = 0; n < 40; ++n) {
     const pair_coupling w = three_pairs_on_one_body(rng);
-    std::vector<pair_friction> settings{disk_pair(0.3, 0.5), disk_pair(0.3, 0.5),
+    std::vector<pair_friction<double>> settings{disk_pair(0.3, 0.5), disk_pair(0.3, 0.5),
                                         disk_pair(0.3, 0.5)};
     std::vector<joint_pair> cold;
     for (std::size_t p = 0; p < 3; ++p)
@@ -222,7 +222,7 @@ TEST(JointPairs, OnePairIsItsLawWhateverTheStart) {
   const matrix a = spinslide_test::random_spd(rng, 0.05, 0);
   pair_coupling w(1);
   w.at(0, 0) = a;
-  pair_friction only = disk_pair(0.1, 0.4);
+  pair_friction<double> only = disk_pair(0.1, 0.4);
   const vec3 s{0.3, -0.1, 2};
   std::vector<joint_pair> pairs{
       {std::ref(only), s, normal_impulse<double>{0.2}, 0, vec3{u(rng), u(rng), u(rng)}}};
@@ -238,7 +238,7 @@ TEST(JointPairs, OnePairIsItsLawWhateverTheStart) {
 }
 
 TEST(JointPairs, CouplingOfAnotherSizeIsRefused) {
-  pair_friction first = disk_pair(0.1, 0.4);
+  pair_friction<double> first = disk_pair(0.1, 0.4);
   std::vector<joint_pair> pairs{{std::ref(first), vec3{1, 0, 0}, normal_impulse<double>{1}, 0}};
   EXPECT_THROW(solve_jointly(pairs, pair_coupling(2)), std::invalid_argument);
   const pair_coupling w(2);
@@ -253,7 +253,7 @@ TEST(JointPairs, CouplingOfAnotherSizeIsRefused) {
 // A block that is singular (a pair that cannot turn about its normal) is
 // still solved: its metric is shifted into what planar_metric accepts.
 TEST(JointPairs, SingularBlockIsConditioned) {
-  pair_friction only = disk_pair(0.1, 0.4);
+  pair_friction<double> only = disk_pair(0.1, 0.4);
   pair_coupling w(1);
   w.at(0, 0) = matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 0}}};
   std::vector<joint_pair> pairs{{std::ref(only), vec3{0.5, 0, 1}, normal_impulse<double>{1}, 0}};

@@ -9,8 +9,10 @@
 // MODE 0 (sliding, from the answer's ratio times 1 + 1e-3), 1 (sliding,
 // cold) or 2 (sticking: a normal impulse of 1e3).  START is the warm
 // start's type (curve_point<double>, or starting_ratio<double> for headers
-// older than issue 26's second session).  It includes the umbrella, the one
-// header every commit has (the headers moved into folders in issue 40).
+// older than issue 26's second session).  HANDLE 1 makes the calls through
+// the run-time handle contact_profile (issue 40), as pair_friction and the
+// adapters do.  It includes the umbrella, the one header every commit has
+// (the headers moved into folders in issue 40).
 
 #include <spinslide/spinslide.hpp>
 
@@ -42,8 +44,17 @@ int main() {
     starts.push_back(MODE == 0 && !first.sticking ? first.ratio * (1 + 1e-3) : 0.0);
   }
   double sum = 0;  // (of the ratios: a field of the results before and after issue 26)
+#if HANDLE
+  const contact_profile<double> handle(profile);
+  for (int r = 0; r < REPS; ++r)
+    for (std::size_t i = 0; i < slips.size(); ++i)
+      sum += handle.visit([&](const auto& p) {
+        return impulse_friction(p, slips[i], 1.0, w, load, START{starts[i]}).ratio;
+      });
+#else
   for (int r = 0; r < REPS; ++r)
     for (std::size_t i = 0; i < slips.size(); ++i)
       sum += impulse_friction(profile, slips[i], 1.0, w, load, START{starts[i]}).ratio;
+#endif
   std::printf("%g\n", sum);
 }

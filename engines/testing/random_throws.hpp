@@ -59,11 +59,14 @@ struct throw_setting {
   double max_turn = HUGE_VAL;
 };
 
-/// The throws of `s`, `count` of them from `seed`, cycling through the steps.
-inline std::vector<throw_case> cases(const throw_setting& s, unsigned seed) {
+/// The throws of `s`, `count` of them from `seed`, cycling through the steps,
+/// with the exact stops of a disk whose pressure is `profile` (by default
+/// the paper's uniform disk).
+template <class Profile = spinslide::uniform_disk<>>
+std::vector<throw_case> cases(const throw_setting& s, unsigned seed,
+                              const Profile& profile = Profile()) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
-  const spinslide::uniform_disk<> disk;
   const double unit_time = std::sqrt(s.radius / s.gravity);  // of stop_time's dimensionless time
   std::vector<throw_case> out;
   out.reserve(count);
@@ -73,7 +76,7 @@ inline std::vector<throw_case> cases(const throw_setting& s, unsigned seed) {
     const double steps = 20 + 180 * u(rng);
     // At unit spin ω* = 1 (ω = μ√(g/R)) and v* = ε: the exact stop t1, then
     // every speed scaled by T/t1.
-    const double t1 = spinslide::stop_time(disk, s.inertia_ratio, ratio, 1.0) * unit_time;
+    const double t1 = spinslide::stop_time(profile, s.inertia_ratio, ratio, 1.0) * unit_time;
     const double scale = steps * dt / t1;
     const double omega = scale * s.friction * std::sqrt(s.gravity / s.radius);
     throw_case c{dt, ratio * s.radius * omega, 2 * pi * u(rng), u(rng) < 0.5 ? omega : -omega,

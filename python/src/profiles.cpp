@@ -226,7 +226,8 @@ void bind_profile_classes(py::module_& m) {
       .def(py::init([](double radius) {
              const std::string repr = "Ring(" + number(radius) + ")";
              if (radius == 1) return make<ring_py>(ring<>(), repr);
-             return make<ring_py>(erased_profile(scaled<ring<>>(ring<>(), radius)), repr);
+             return make<ring_py>(spinslide::erased_profile<>(scaled<ring<>>(ring<>(), radius)),
+                                  repr);
            }),
            py::arg("radius") = 1.0,
            "radius: the circle's radius in units of the contact radius, in (0, 1] (else "
@@ -243,7 +244,7 @@ void bind_profile_classes(py::module_& m) {
       "are normalised).")
       .def(py::init([](const std::vector<std::pair<double, const profile_handle*>>& parts) {
              std::vector<double> w;
-             std::vector<erased_profile> p;
+             std::vector<spinslide::erased_profile<>> p;
              std::string repr = "WeightedSum([";
              for (const auto& [weight, part] : parts) {
                if (part == nullptr) throw py::type_error("spinslide.WeightedSum: a part is None");
@@ -252,7 +253,8 @@ void bind_profile_classes(py::module_& m) {
                repr += (w.size() > 1 ? ", (" : "(") + number(weight) + ", " + part->repr + ")";
              }
              return make<weighted_sum_py>(
-                 erased_profile(runtime_weighted_sum(std::move(w), std::move(p))), repr + "])");
+                 spinslide::erased_profile<>(runtime_weighted_sum(std::move(w), std::move(p))),
+                 repr + "])");
            }),
            py::arg("parts"),
            "parts: a list of (weight, profile); each weight finite and ≥ 0, one > 0 (else "
@@ -264,7 +266,7 @@ void bind_profile_classes(py::module_& m) {
       "speed).")
       .def(py::init([](py::function pressure, double inner_ratio) {
              return make<radial_profile_py>(
-                 erased_profile(radial_profile<double, python_pressure>(
+                 spinslide::erased_profile<>(radial_profile<double, python_pressure>(
                      python_pressure(std::move(pressure)), inner_ratio)),
                  "RadialProfile(<pressure>, inner_ratio=" + number(inner_ratio) + ")");
            }),
@@ -276,8 +278,9 @@ void bind_profile_classes(py::module_& m) {
       "A profile shrunk to the radius `radius` of the contact (0 < radius ≤ 1): its load on "
       "r ≤ radius, as the part of a weighted sum (a core under a ring, say).")
       .def(py::init([](const profile_handle& p, double radius) {
-             return make<scaled_py>(erased_profile(scaled<erased_profile>(erase(p), radius)),
-                                    "Scaled(" + p.repr + ", " + number(radius) + ")");
+             return make<scaled_py>(
+                 spinslide::erased_profile<>(scaled<spinslide::erased_profile<>>(erase(p), radius)),
+                 "Scaled(" + p.repr + ", " + number(radius) + ")");
            }),
            py::arg("profile"), py::arg("radius"));
   py::class_<tabulated_py, profile_handle>(

@@ -18,13 +18,16 @@
 
 namespace spinslide_python {
 
+using spinslide::force_torque_result;
+using ratio_list = spinslide::detail::ratio_list<double>;
+
 // weighted_sum over a list: the same normalisation (one function,
 // detail::normalise_weights) and the same order of summation, so that it
 // gives weighted_sum's numbers bit for bit.
 class runtime_weighted_sum : public spinslide::profile_base<runtime_weighted_sum, double,
                                                             boost::math::policies::policy<>> {
  public:
-  runtime_weighted_sum(std::vector<double> weights, std::vector<erased_profile> parts)
+  runtime_weighted_sum(std::vector<double> weights, std::vector<spinslide::erased_profile<>> parts)
       : parts_(std::move(parts)), w_(std::move(weights)) {
     if (parts_.empty())
       throw std::domain_error("spinslide.WeightedSum: the list of (weight, profile) is empty");
@@ -33,13 +36,13 @@ class runtime_weighted_sum : public spinslide::profile_base<runtime_weighted_sum
   }
   const std::vector<double>& weights() const { return w_; }
   double mean_radius() const {
-    return sum([](const erased_profile& p) { return p.mean_radius(); });
+    return sum([](const spinslide::erased_profile<>& p) { return p.mean_radius(); });
   }
   double mean_inverse_radius() const {
-    return sum([](const erased_profile& p) { return p.mean_inverse_radius(); });
+    return sum([](const spinslide::erased_profile<>& p) { return p.mean_inverse_radius(); });
   }
   double mean_square_radius() const {
-    return sum([](const erased_profile& p) { return p.mean_square_radius(); });
+    return sum([](const spinslide::erased_profile<>& p) { return p.mean_square_radius(); });
   }
   ratio_list singular_ratios() const {
     ratio_list r;
@@ -71,7 +74,7 @@ class runtime_weighted_sum : public spinslide::profile_base<runtime_weighted_sum
     return s;
   }
 
-  std::vector<erased_profile> parts_;
+  std::vector<spinslide::erased_profile<>> parts_;
   std::vector<double> w_;
 };
 

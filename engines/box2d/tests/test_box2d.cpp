@@ -24,7 +24,7 @@ using spinslide::box2d::table_friction;
 
 constexpr double radius = 0.05, mass = 0.016, mu = 0.3, g = 9.81, dt = 1e-3;
 
-pair_friction puck_friction() {
+pair_friction<double> puck_friction() {
   return pair_friction(spinslide::uniform_disk<>(), patch_radius<double>{radius},
                        friction_coefficient<double>{mu});
 }

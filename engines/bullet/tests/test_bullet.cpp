@@ -42,7 +42,7 @@ using spinslide::pair_friction;
 using spinslide::patch_radius;
 using spinslide::bullet::coupled_friction_solver;
 
-pair_friction ball_friction() {
+pair_friction<double> ball_friction() {
   return pair_friction(spinslide::hertz<>(),
                        hertz_radius(ball_radius, patch_radius<double>{ball_patch}),
                        friction_coefficient<double>{ball_mu});

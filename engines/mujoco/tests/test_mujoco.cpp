@@ -31,7 +31,7 @@ using spinslide::mujoco::geom_name;
 
 constexpr double pi = 3.14159265358979323846;
 
-pair_friction disk_friction(double mu = 0.2) {
+pair_friction<double> disk_friction(double mu = 0.2) {
   return pair_friction(spinslide::uniform_disk<>(), patch_radius<double>{0.06},
                        friction_coefficient<double>{mu});
 }
@@ -278,7 +278,7 @@ struct plate {
       friction.couple(geom_name{"foot" + std::to_string(k)}, geom_name{"floor"},
                       disk_friction_of(0.02));
   }
-  static pair_friction disk_friction_of(double a) {
+  static pair_friction<double> disk_friction_of(double a) {
     return pair_friction(spinslide::uniform_disk<>(), patch_radius<double>{a},
                          friction_coefficient<double>{0.2});
   }

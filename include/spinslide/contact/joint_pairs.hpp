@@ -81,7 +81,7 @@ class pair_coupling {
 /// and, after solve_jointly, the pair's impulse.
 struct joint_pair {
   /// The pair's settings and its kept curve point (updated by the solve).
-  std::reference_wrapper<spinslide::pair_friction> friction;
+  std::reference_wrapper<spinslide::pair_friction<double>> friction;
   /// The pair's slip (v_x, v_y, ω) at the end of the step without any of the
   /// pairs' friction (a detail::vector3<double>, the library's 3-vector).
   std::array<double, 3> free_motion{};

@@ -48,18 +48,18 @@ inline btTransform at(const btVector3& origin) {
 class scene {
  public:
   explicit scene(friction kind, const std::optional<btVector3>& table_top = btVector3(0, 0, 0),
-                 const btVector3& gravity = btVector3(0, 0, -g))
+                 const btVector3& gravity = btVector3(0, 0, btScalar(-g)))
       : kind_(kind),
         dispatcher_(multipoint(config_)),
         solver_(kind == friction::plugin ? new spinslide::bullet::coupled_friction_solver
                                          : new btSequentialImpulseConstraintSolver),
         world_(&dispatcher_, &broadphase_, solver_.get(), &config_),
-        table_shape_(btVector3(3, 3, table_half_height)),
+        table_shape_(btVector3(3, 3, btScalar(table_half_height))),
         table_(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &table_shape_)) {
     world_.setGravity(gravity);
     if (table_top) {
-      table_.setWorldTransform(
-          at(btVector3(table_top->x(), table_top->y(), table_top->z() - table_half_height)));
+      table_.setWorldTransform(at(
+          btVector3(table_top->x(), table_top->y(), table_top->z() - btScalar(table_half_height))));
       table_.setFriction(1);
       world_.addRigidBody(&table_);
       has_table_ = true;
@@ -78,9 +78,9 @@ class scene {
   // `origin`, released at rest.
   btRigidBody* add(btCollisionShape* shape, double mass, const btVector3& origin) {
     btVector3 inertia(0, 0, 0);
-    shape->calculateLocalInertia(mass, inertia);
+    shape->calculateLocalInertia(btScalar(mass), inertia);
     bodies_.push_back(std::make_unique<btRigidBody>(
-        btRigidBody::btRigidBodyConstructionInfo(mass, nullptr, shape, inertia)));
+        btRigidBody::btRigidBodyConstructionInfo(btScalar(mass), nullptr, shape, inertia)));
     btRigidBody* b = bodies_.back().get();
     b->setWorldTransform(at(origin));
     b->setActivationState(DISABLE_DEACTIVATION);  // no sleeping while it creeps
@@ -95,7 +95,7 @@ class scene {
   }
 
   // One step of h (fixedTimeStep = h, maxSubSteps = 1: exactly one step).
-  void step(double h) { world_.stepSimulation(h, 1, h); }
+  void step(double h) { world_.stepSimulation(btScalar(h), 1, btScalar(h)); }
 
   // The normal impulse on `body` this step (its manifolds' points) and its
   // deepest penetration.
@@ -147,7 +147,7 @@ class scene {
 };
 
 // spinslide's friction of the coin on the table: uniform pressure, a = R.
-inline spinslide::pair_friction coin_friction() {
+inline spinslide::pair_friction<double> coin_friction() {
   return spinslide::pair_friction(spinslide::uniform_disk<>(),
                                   spinslide::patch_radius<double>{coin_radius},
                                   spinslide::friction_coefficient<double>{coin_mu});
@@ -160,9 +160,9 @@ inline spinslide::pair_friction coin_friction() {
 // coin coupled to the table with coin_friction().
 inline void set_coin_friction(scene& s, btRigidBody* coin) {
   if (s.kind() == friction::native) {
-    coin->setFriction(coin_mu);
-    coin->setSpinningFriction(coin_mu * 2.0 / 3.0 * coin_radius);
-    coin->setRollingFriction(1e-9);  // > 0, or Bullet ignores the spinning friction
+    coin->setFriction(btScalar(coin_mu));
+    coin->setSpinningFriction(btScalar(coin_mu * 2.0 / 3.0 * coin_radius));
+    coin->setRollingFriction(btScalar(1e-9));  // > 0, or Bullet ignores the spinning friction
   } else {
     s.plugin().couple(coin, s.table(), coin_friction());
   }

@@ -129,7 +129,7 @@ inline std::vector<int> body_geoms(const mjModel* m) {
 // soles (a uniform disk of the patch radius), the capsules and spheres
 // curved (Hertz's patch from MuJoCo's penetration, from 0: a grazing touch is
 // point friction).
-inline spinslide::pair_friction friction_of(const mjModel* m, int geom) {
+inline spinslide::pair_friction<double> friction_of(const mjModel* m, int geom) {
   const spinslide::friction_coefficient<double> mu{friction};
   if (m->geom_type[geom] == mjGEOM_BOX)
     return spinslide::pair_friction(spinslide::uniform_disk<>(),

@@ -57,7 +57,7 @@ class table_friction {
   /// Couples `body` (a dynamic body with mass; it must outlive its use here)
   /// with `friction` (its patch: pair_friction.hpp); returns its index for
   /// report().  A null or massless body is std::invalid_argument.
-  std::size_t couple(b2Body* body, const spinslide::pair_friction& friction) {
+  std::size_t couple(b2Body* body, const spinslide::pair_friction<double>& friction) {
     static const char* function = "spinslide::box2d::table_friction::couple";
     detail::required(function, "the body", body);
     if (!(body->GetMass() > 0)) detail::refuse(function, "a dynamic body with mass is needed");
@@ -84,7 +84,7 @@ class table_friction {
  private:
   struct entry {
     b2Body* body;
-    spinslide::pair_friction friction;
+    spinslide::pair_friction<double> friction;
     pair_report last;
   };
 

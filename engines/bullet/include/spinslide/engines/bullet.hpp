@@ -66,7 +66,7 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
   /// throws std::invalid_argument.  Coupling a pair again replaces its
   /// settings (the rule of every adapter).
   void couple(const btCollisionObject* a, const btCollisionObject* b,
-              const spinslide::pair_friction& friction) {
+              const spinslide::pair_friction<double>& friction) {
     static const char* function = "spinslide::bullet::coupled_friction_solver::couple";
     detail::required(function, "collision object a", a);
     detail::required(function, "collision object b", b);
@@ -131,7 +131,7 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
 
  private:
   struct pair_state {
-    spinslide::pair_friction friction;  // the settings and the last curve point
+    spinslide::pair_friction<double> friction;  // the settings and the last curve point
     pair_report last;                   // with `first` as its first body
     const btCollisionObject* first;
   };

@@ -89,7 +89,7 @@ class coupled_friction {
   /// report().  Both geoms must be frictionless (condim 1) and distinct;
   /// otherwise std::invalid_argument.  A pair already coupled (in either
   /// order) keeps its index and takes the new friction.
-  std::size_t couple(geom_id a, geom_id b, const spinslide::pair_friction& friction) {
+  std::size_t couple(geom_id a, geom_id b, const spinslide::pair_friction<double>& friction) {
     static const char* function = "spinslide::mujoco::coupled_friction::couple";
     const int ngeom = model_->ngeom;
     if (a.value < 0 || a.value >= ngeom || b.value < 0 || b.value >= ngeom || a.value == b.value)
@@ -120,7 +120,7 @@ class coupled_friction {
 
   /// couple() by the geoms' names; an unknown name is std::invalid_argument.
   std::size_t couple(const geom_name& a, const geom_name& b,
-                     const spinslide::pair_friction& friction) {
+                     const spinslide::pair_friction<double>& friction) {
     return couple(lookup(a), lookup(b), friction);
   }
 
@@ -178,10 +178,10 @@ class coupled_friction {
  private:
   using vec3 = detail::vector3<double>;  // the library's 3-vector
   struct coupled_pair {
-    coupled_pair(int first, int second, const spinslide::pair_friction& f)
+    coupled_pair(int first, int second, const spinslide::pair_friction<double>& f)
         : a(first), b(second), friction(f) {}
     int a, b;
-    spinslide::pair_friction friction;
+    spinslide::pair_friction<double> friction;
     pair_report report{};
     bool active = false;         // in contact this step
     std::array<vec3, 3> axes{};  // t1, t2, n
