@@ -11,6 +11,7 @@
 
 #include "../examples/bullet_coin/scene.hpp"
 #include "bullet_world.hpp"
+#include "coin_throws.hpp"
 #include "random_throws.hpp"
 #include "report_convention.hpp"
 
@@ -31,58 +32,12 @@ using bullet_test::coin_mu;
 using bullet_test::pi;
 using bullet_test::world;
 
-struct stop_errors {
-  std::vector<double> relative;  // (Bullet's stop − the exact stop)/the exact stop
-  int never = 0;                 // throws not at rest within three exact stop times
-  int moved_again = 0;           // throws that moved again after coming to rest
-};
+using coin_throws::stop_errors;
 
-// Random throws of the steel coin (v0* in [0.1, 2.1], ω0* in [0.1, 3.1],
-// drawn from `rng`) stepped at `dt` with the plug-in, against the exact stop
-// of the same throw (simulate_throw's t*, the uniform disk at γ = 1/2): "at
-// rest" is both the horizontal speed and R|ω| below 1e-6 of their starts.
+// The uniform coin's throws (coin_throws.hpp): its own friction, the uniform
+// disk's exact stops.
 stop_errors coin_stops(double dt, int throws, std::mt19937_64 rng) {
-  const double thickness = 2 * coin_half_thickness;
-  const double mass = 7850 * pi * coin_radius * coin_radius * thickness;
-  std::uniform_real_distribution<double> u(0, 1);
-  stop_errors out;
-  for (int k = 0; k < throws; ++k) {
-    const double vs = 0.1 + 2 * u(rng), ws = 0.1 + 3 * u(rng);
-    const double v0 = vs * coin_mu * std::sqrt(g * coin_radius),
-                 w0 = ws * coin_mu * std::sqrt(g / coin_radius);
-    bullet_scene::scene s(bullet_scene::friction::plugin, btVector3(0, 0, 0));
-    btCylinderShapeZ shape(btVector3(coin_radius, coin_radius, thickness / 2));
-    btRigidBody* coin = s.add(&shape, mass, btVector3(0, 0, thickness / 2));
-    bullet_scene::set_coin_friction(s, coin);
-    for (int i = 0; i < 300; ++i) s.step(1e-5);  // settle on the table
-    coin->setLinearVelocity(btVector3(v0, 0, coin->getLinearVelocity().z()));
-    coin->setAngularVelocity(btVector3(0, 0, w0));
-    const double exact =
-        spinslide::stop_time(spinslide::uniform_disk<>(), 0.5, vs, ws) * std::sqrt(coin_radius / g);
-    double stopped = -1;
-    bool again = false;
-    const int steps = static_cast<int>(3 * exact / dt) + 10;
-    for (int i = 1; i <= steps; ++i) {
-      s.step(dt);
-      const btVector3 v = coin->getLinearVelocity();
-      const double w = coin->getAngularVelocity().z();
-      EXPECT_TRUE(std::isfinite(v.x() + v.y() + v.z() + w));
-      const bool rest = std::hypot(v.x(), v.y()) < 1e-6 * v0 && std::fabs(w) < 1e-6 * w0;
-      if (rest && stopped < 0) stopped = i * dt;
-      if (!rest && stopped >= 0) {
-        again = true;
-        stopped = -1;
-      }
-    }
-    if (stopped < 0) {
-      ++out.never;
-      continue;
-    }
-    out.moved_again += again;
-    out.relative.push_back((stopped - exact) / exact);
-  }
-  std::sort(out.relative.begin(), out.relative.end());
-  return out;
+  return coin_throws::run(spinslide::uniform_disk<>(), coin_friction(), dt, throws, rng);
 }
 
 double median(const std::vector<double>& sorted) { return sorted[sorted.size() / 2]; }
