@@ -7,7 +7,7 @@
 /// friction settings (the patch's pressure profile, any profile through the
 /// run-time handle contact_profile; how its radius is found; μ) and the
 /// impulse over one step, with the last step's curve point kept to start
-/// the next step's search.  An engine adapter (engines/<engine>/) gathers
+/// the next step's search.  An engine adapter (under engines/) gathers
 /// what its engine knows (the relative motion before friction, the
 /// effective inverse mass, the normal impulse, the penetration), applies the
 /// impulse this returns and reports it as a pair_report (pair_report.hpp).
