@@ -144,7 +144,7 @@ TEST(JointPairs, NoFeasibleNeighbourLeavesLessEnergy) {
   for (int n = 0; n < 40; ++n) {
     const pair_coupling w = three_pairs_on_one_body(rng);
     std::vector<pair_friction<double>> settings{disk_pair(0.3, 0.5), disk_pair(0.3, 0.5),
-                                        disk_pair(0.3, 0.5)};
+                                                disk_pair(0.3, 0.5)};
     std::vector<joint_pair> pairs;
     std::vector<vec3> s;
     for (std::size_t p = 0; p < 3; ++p) {
@@ -192,7 +192,7 @@ TEST(JointPairs, AnyStartEndsAtTheSameMotion) {
   for (int n = 0; n < 40; ++n) {
     const pair_coupling w = three_pairs_on_one_body(rng);
     std::vector<pair_friction<double>> settings{disk_pair(0.3, 0.5), disk_pair(0.3, 0.5),
-                                        disk_pair(0.3, 0.5)};
+                                                disk_pair(0.3, 0.5)};
     std::vector<joint_pair> cold;
     for (std::size_t p = 0; p < 3; ++p)
       cold.push_back(

@@ -13,9 +13,9 @@
 #include <spinslide/base/friction_result.hpp>
 #include <spinslide/base/named_inputs.hpp>
 #include <spinslide/values/approximations.hpp>
+#include <spinslide/values/contact_profile.hpp>
 #include <spinslide/values/coupling.hpp>
 #include <spinslide/values/cylinder.hpp>
-#include <spinslide/values/contact_profile.hpp>
 #include <spinslide/values/disk.hpp>
 #include <spinslide/values/erased_profile.hpp>
 #include <spinslide/values/force_torque_result.hpp>

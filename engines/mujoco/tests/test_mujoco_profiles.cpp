@@ -30,20 +30,21 @@ using spinslide::patch_radius;
 // rest on its floor.  No NaN; every throw stops from 0.1 step before its
 // exact stop to 2 steps after it, and none slips again (the uniform disk's
 // bounds, test_mujoco.cpp).
+void expect_within_bounds(const char* name, double step, const random_throws::step_statistics& s) {
+  EXPECT_EQ(s.not_finite, 0) << name << " " << step;
+  EXPECT_EQ(s.never, 0) << name << " " << step;
+  EXPECT_EQ(s.slipped_again, 0) << name << " " << step;
+  EXPECT_GE(s.quantile(0), -0.1) << name << " " << step;
+  EXPECT_LE(s.quantile(1), 2.0) << name << " " << step;
+}
+
 template <class Profile>
 void expect_exact_stops(const char* name, const Profile& profile, std::size_t throws) {
   const auto outcomes = disk_throws::run(
       name, profile,
       pair_friction(profile, patch_radius<double>{0.06}, friction_coefficient<double>{0.2}),
       {2e-3, 1e-3}, 4001, throws);
-  for (const auto& entry : outcomes) {
-    const random_throws::step_statistics& s = entry.second;
-    EXPECT_EQ(s.not_finite, 0) << name << " " << entry.first;
-    EXPECT_EQ(s.never, 0) << name << " " << entry.first;
-    EXPECT_EQ(s.slipped_again, 0) << name << " " << entry.first;
-    EXPECT_GE(s.quantile(0), -0.1) << name << " " << entry.first;
-    EXPECT_LE(s.quantile(1), 2.0) << name << " " << entry.first;
-  }
+  for (const auto& entry : outcomes) expect_within_bounds(name, entry.first, entry.second);
 }
 
 TEST(MujocoAdapter, ARingStopsAtItsExactStop) {

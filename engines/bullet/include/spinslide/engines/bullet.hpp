@@ -132,7 +132,7 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
  private:
   struct pair_state {
     spinslide::pair_friction<double> friction;  // the settings and the last curve point
-    pair_report last;                   // with `first` as its first body
+    pair_report last;                           // with `first` as its first body
     const btCollisionObject* first;
   };
 
