@@ -47,15 +47,14 @@ friction_result<Vec3, Vec3> wrench_about(const friction_result<Vec3, Vec3>& fric
                 "spinslide::wrench_about: the points and the friction must be 3-component "
                 "vector classes (operator[] or members x, y, z), not pointers or C arrays");
   using R = std::decay_t<decltype(detail::get<0>(friction.force))>;
-  const R r[3] = {static_cast<R>(detail::get<0>(patch_centre) - detail::get<0>(point)),
-                  static_cast<R>(detail::get<1>(patch_centre) - detail::get<1>(point)),
-                  static_cast<R>(detail::get<2>(patch_centre) - detail::get<2>(point))};
-  const R f[3] = {detail::get<0>(friction.force), detail::get<1>(friction.force),
-                  detail::get<2>(friction.force)};
+  const detail::vector3<R> c = detail::read<3, R>(patch_centre), x = detail::read<3, R>(point);
+  const detail::vector3<R> moment =
+      detail::cross(detail::vector3<R>{c[0] - x[0], c[1] - x[1], c[2] - x[2]},
+                    detail::read<3, R>(friction.force));
   friction_result<Vec3, Vec3> out = friction;
-  detail::set<0>(out.torque, detail::get<0>(friction.torque) + (r[1] * f[2] - r[2] * f[1]));
-  detail::set<1>(out.torque, detail::get<1>(friction.torque) + (r[2] * f[0] - r[0] * f[2]));
-  detail::set<2>(out.torque, detail::get<2>(friction.torque) + (r[0] * f[1] - r[1] * f[0]));
+  detail::set<0>(out.torque, detail::get<0>(friction.torque) + moment[0]);
+  detail::set<1>(out.torque, detail::get<1>(friction.torque) + moment[1]);
+  detail::set<2>(out.torque, detail::get<2>(friction.torque) + moment[2]);
   return out;
 }
 

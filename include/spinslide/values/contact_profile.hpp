@@ -67,15 +67,13 @@ class contact_profile {
   bool erased() const { return std::holds_alternative<erased_profile<Real>>(profile_); }
 
  private:
-  template <class Profile>
-  static constexpr bool named() {
-    return std::is_same<Profile, uniform_disk<Real>>::value ||
-           std::is_same<Profile, annulus<Real>>::value ||
-           std::is_same<Profile, ring<Real>>::value || std::is_same<Profile, hertz<Real>>::value ||
-           std::is_same<Profile, boussinesq<Real>>::value ||
-           std::is_same<Profile, tabulated_profile<Real>>::value ||
-           std::is_same<Profile, erased_profile<Real>>::value;
-  }
+  // True if Profile is one of the alternatives (read from the variant's list).
+  template <class Profile, class Variant = alternatives>
+  struct named;
+  template <class Profile, class... Held>
+  struct named<Profile, std::variant<Held...>>
+      : std::integral_constant<bool, (std::is_same<Profile, Held>::value || ...)> {};
+
   template <std::size_t I, class F>
   decltype(auto) visit_from(F& f) const {
     if constexpr (I + 1 == std::variant_size<alternatives>::value) {
@@ -96,7 +94,7 @@ class contact_profile {
     static_assert(!has_box_limit_set<Profile>::value,
                   "spinslide::contact_profile: the uncoupled caps' limit set is a box, whose "
                   "corners the contact laws' 3-D projection cannot resolve");
-    if constexpr (named<Profile>()) {
+    if constexpr (named<Profile>::value) {
       return alternatives(std::in_place_type<Profile>, std::move(profile));
     } else {
       return alternatives(std::in_place_type<erased_profile<Real>>, std::move(profile));
