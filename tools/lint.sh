@@ -161,6 +161,8 @@ if [ -f "$lammps_src/pair.h" ] && command -v mpicxx >/dev/null; then
   mpi_include="$(mpicxx --showme:incdirs | sed 's/[^ ][^ ]*/-isystem &/g')"
   LINT_PLUGIN_FLAGS="-std=c++17 -I$root/include -isystem $lammps_src $mpi_include"
   LINT_PLUGIN_FLAGS+=" -DLAMMPS_SMALLBIG -DLMP_PLUGIN -DLAMMPS_EXCEPTIONS"
+  # The version, as engines/lammps/CMakeLists.txt defines it (from VERSION).
+  LINT_PLUGIN_FLAGS+=" -DSPINSLIDE_VERSION=\"$(tr -d '[:space:]' <"$root/VERSION")\""
   for f in engines/lammps/*.cpp; do joblist+=("plugin:$f"); done
 else
   echo "lint: skipped engines/lammps/*.cpp: no LAMMPS source tree at $lammps_src" \
