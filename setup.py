@@ -26,7 +26,7 @@ setup(
             sorted(glob("python/src/*.cpp")),
             include_dirs=["include"],
             cxx_std=17,
-            extra_compile_args=["-O3"],
+            extra_compile_args=["-O3", "-g0"],  # no debug info in the wheel
             define_macros=[("SPINSLIDE_VERSION", f'"{VERSION}"')],
         )
     ],

@@ -87,6 +87,7 @@ if(MODE STREQUAL "install")
     -DSPINSLIDE_BUILD_TESTS=OFF
     -DSPINSLIDE_BUILD_EXAMPLES=OFF
     -DSPINSLIDE_BUILD_BENCHMARKS=OFF
+    -DSPINSLIDE_BUILD_PYTHON=OFF  # pip installs the Python package, not CMake
     "-DCMAKE_INSTALL_PREFIX=${INSTALL_PREFIX}")
   run_step(build TRUE "${CMAKE_COMMAND}" --build "${BINARY_DIR}" ${config_args})
   run_step(install FALSE "${CMAKE_COMMAND}" --install "${BINARY_DIR}" ${config_args})
