@@ -37,6 +37,11 @@ enum class TangentialModel { kLinearNoHistory, kLinearHistory, kMindlin };
 /// The twisting torque: none, Marshall's spring (from the tangential one
 /// and the patch), or a spring of its own (sds).
 enum class TwistModel { kNone, kMarshall, kSds };
+/// The pressure profile of the contact's patch, whose limit set the coupled
+/// cap projects onto (spinslide's profiles; `profile` keyword): Hertz's
+/// sphere (the default), the uniform disk, the ring (all pressure on the
+/// rim), Boussinesq's flat punch and the uniform annulus b <= r/a <= 1.
+enum class PatchProfile { kHertz, kDisk, kRing, kBoussinesq, kAnnulus };
 
 /// The effective Young's modulus E* of two materials (Hertz).
 inline double effective_youngs(double e1, double nu1, double e2, double nu2) {
@@ -87,6 +92,8 @@ struct ContactLaw {
   double k_roll = 0.0, gamma_roll = 0.0, mu_roll = 0.0;
   TwistModel twist = TwistModel::kMarshall;
   double k_twist = 0.0, gamma_twist = 0.0, mu_twist = 0.0;  ///< sds only
+  PatchProfile profile = PatchProfile::kHertz;              ///< the coupled cap's limit set
+  double annulus_inner = 0.0;  ///< annulus: its inner radius over a, in [0, 1)
 
   /// Whether the normal model takes E and nu.
   bool material() const { return normal != NormalModel::kHooke && normal != NormalModel::kHertz; }
@@ -257,6 +264,32 @@ inline std::string parse_spin_model(TokenCursor& c, const NumberReader& number, 
   return "";
 }
 
+// profile hertz|disk|ring|boussinesq|annulus b (the plugin's own keyword)
+inline std::string parse_profile(TokenCursor& c, const NumberReader& number, ContactLaw& law) {
+  if (!c.has(1)) return "profile needs a model: hertz, disk, ring, boussinesq or annulus b";
+  const std::string& model = c.at(1);
+  law.annulus_inner = 0.0;
+  if (model == "annulus") {
+    if (!c.has(2)) return "profile annulus needs b, its inner radius over the patch radius";
+    law.profile = PatchProfile::kAnnulus;
+    law.annulus_inner = number(c.at(2));
+    c.i += 3;
+    return "";
+  }
+  if (model == "hertz")
+    law.profile = PatchProfile::kHertz;
+  else if (model == "disk")
+    law.profile = PatchProfile::kDisk;
+  else if (model == "ring")
+    law.profile = PatchProfile::kRing;
+  else if (model == "boussinesq")
+    law.profile = PatchProfile::kBoussinesq;
+  else
+    return "profile " + model + ": hertz, disk, ring, boussinesq or annulus b";
+  c.i += 2;
+  return "";
+}
+
 inline std::string parse_damping(TokenCursor& c, ContactLaw& law) {
   if (!c.has(1)) return "damping needs a model";
   const std::string& model = c.at(1);
@@ -276,8 +309,9 @@ inline std::string parse_damping(TokenCursor& c, ContactLaw& law) {
 
 }  // namespace detail
 
-/// Reads LAMMPS' `pair_style granular` model keywords from `tokens` into
-/// `law` (twisting defaults to none, as in LAMMPS); the tokens it does not
+/// Reads LAMMPS' `pair_style granular` model keywords and the plugin's
+/// `profile` from `tokens` into `law` (twisting defaults to none, as in
+/// LAMMPS; the profile to Hertz's); the tokens it does not
 /// know are appended to `rest`, in order, for the caller (a wall's
 /// geometry, the plugin's own options).  Returns an error message, or an
 /// empty string.
@@ -302,6 +336,8 @@ inline std::string parse_lammps_model(const std::vector<std::string>& tokens,
       why = detail::parse_spin_model(c, number, law);
     } else if (key == "damping") {
       why = detail::parse_damping(c, law);
+    } else if (key == "profile") {
+      why = detail::parse_profile(c, number, law);
     } else if (key == "limit_damping") {
       law.limit_damping = true;
       ++c.i;
@@ -361,6 +397,9 @@ inline std::string check_law(const ContactLaw& law) {
   if (law.twist == TwistModel::kSds &&
       !(law.k_twist > 0.0 && law.gamma_twist >= 0.0 && law.mu_twist >= 0.0))
     return "twisting sds needs a stiffness > 0, a damping and a friction coefficient >= 0";
+  if (law.profile == PatchProfile::kAnnulus &&
+      !(law.annulus_inner >= 0.0 && law.annulus_inner < 1.0))
+    return "profile annulus needs b in [0, 1)";
   return "";
 }
 
@@ -387,7 +426,8 @@ inline ContactLaw resolve(ContactLaw law, Moduli moduli, bool alpha_by_pow) {
 /// pair can be made of them.
 inline bool same_forms(const ContactLaw& a, const ContactLaw& b) {
   return a.normal == b.normal && a.damping == b.damping && a.tangential == b.tangential &&
-         a.rolling == b.rolling && a.twist == b.twist && a.kt_null == b.kt_null;
+         a.rolling == b.rolling && a.twist == b.twist && a.kt_null == b.kt_null &&
+         a.profile == b.profile && a.annulus_inner == b.annulus_inner;
 }
 
 /// The law of two types of the same forms (resolved, exact moduli): E* and

@@ -26,26 +26,29 @@ namespace spinslide_lammps {
 /// The first int of the pair's restart section: "SPSL" read as a
 /// big-endian int.  Anything else there was not written by this plugin.
 constexpr int kRestartMagic = 0x5350534C;
-/// The layout of the section after the magic (the second int).  1: the
+/// The layout of the section after the magic (the second int).  2: the
 /// settings (coupled, twist_negate as ints), the number of types and the
 /// record size (ints), then per type pair I <= J its setflag (int) and, if
 /// set, its record (kLawRecordSize doubles).  A reader refuses any other
-/// layout.  (Plugins before layout 1, version 0.1.0, wrote no pair section:
-/// LAMMPS then asks for pair_style and pair_coeff after read_restart.)
-constexpr int kRestartLayout = 1;
+/// layout.  (Layout 1, of the unreleased plugin before the `profile`
+/// keyword, had no profile in its records; plugins before it, version
+/// 0.1.0, wrote no pair section: LAMMPS then asks for pair_style and
+/// pair_coeff after read_restart.)
+constexpr int kRestartLayout = 2;
 
 namespace detail {
 
-// The law's numbers, in the record's order (after its 7 enumerations and
+// The law's numbers, in the record's order (after its 8 enumerations and
 // flags); pack and unpack walk the same lists.
 constexpr double ContactLaw::*kLawNumbers[] = {
-    &ContactLaw::kn,          &ContactLaw::youngs,     &ContactLaw::poisson, &ContactLaw::damp,
-    &ContactLaw::cohesion,    &ContactLaw::kt,         &ContactLaw::xgammat, &ContactLaw::mu,
-    &ContactLaw::k_roll,      &ContactLaw::gamma_roll, &ContactLaw::mu_roll, &ContactLaw::k_twist,
-    &ContactLaw::gamma_twist, &ContactLaw::mu_twist};
+    &ContactLaw::kn,          &ContactLaw::youngs,   &ContactLaw::poisson,
+    &ContactLaw::damp,        &ContactLaw::cohesion, &ContactLaw::kt,
+    &ContactLaw::xgammat,     &ContactLaw::mu,       &ContactLaw::k_roll,
+    &ContactLaw::gamma_roll,  &ContactLaw::mu_roll,  &ContactLaw::k_twist,
+    &ContactLaw::gamma_twist, &ContactLaw::mu_twist, &ContactLaw::annulus_inner};
 constexpr double LegacyLaw::*kLegacyNumbers[] = {&LegacyLaw::kn, &LegacyLaw::kt, &LegacyLaw::gamman,
                                                  &LegacyLaw::gammat, &LegacyLaw::xmu};
-constexpr std::size_t kLawFlags = 7;     // normal, damping, tangential, twist, 3 flags
+constexpr std::size_t kLawFlags = 8;     // normal, damping, tangential, twist, 3 flags, profile
 constexpr std::size_t kLegacyFlags = 2;  // model, limit_damping
 constexpr std::size_t kNumLaw = sizeof(kLawNumbers) / sizeof(kLawNumbers[0]);
 constexpr std::size_t kNumLegacy = sizeof(kLegacyNumbers) / sizeof(kLegacyNumbers[0]);
@@ -75,6 +78,7 @@ inline void pack_law(const ContactLaw& law, const LegacyLaw& legacy, double cuto
   record[k++] = law.limit_damping ? 1.0 : 0.0;
   record[k++] = law.kt_null ? 1.0 : 0.0;
   record[k++] = law.rolling ? 1.0 : 0.0;
+  record[k++] = static_cast<int>(law.profile);
   for (double ContactLaw::*member : detail::kLawNumbers) record[k++] = law.*member;
   record[k++] = static_cast<int>(legacy.model);
   record[k++] = legacy.limit_damping ? 1.0 : 0.0;
@@ -96,12 +100,13 @@ inline std::string unpack_law(const double* record, ContactLaw& law, LegacyLaw& 
   const int twist = detail::small_whole(record[3], static_cast<int>(TwistModel::kSds));
   const int flags[3] = {detail::small_whole(record[4], 1), detail::small_whole(record[5], 1),
                         detail::small_whole(record[6], 1)};
+  const int profile = detail::small_whole(record[7], static_cast<int>(PatchProfile::kAnnulus));
   const std::size_t at_legacy = detail::kLawFlags + detail::kNumLaw;
   const int model =
       detail::small_whole(record[at_legacy], static_cast<int>(LegacyModel::kHertzHistory));
   const int legacy_limit = detail::small_whole(record[at_legacy + 1], 1);
   if (normal < 0 || damping < 0 || tangential < 0 || twist < 0 || flags[0] < 0 || flags[1] < 0 ||
-      flags[2] < 0 || model < 0 || legacy_limit < 0)
+      flags[2] < 0 || profile < 0 || model < 0 || legacy_limit < 0)
     return "a type pair's record holds a model number no law has (a damaged file?)";
   law.normal = static_cast<NormalModel>(normal);
   law.damping = static_cast<DampingModel>(damping);
@@ -110,6 +115,7 @@ inline std::string unpack_law(const double* record, ContactLaw& law, LegacyLaw& 
   law.limit_damping = flags[0] == 1;
   law.kt_null = flags[1] == 1;
   law.rolling = flags[2] == 1;
+  law.profile = static_cast<PatchProfile>(profile);
   std::size_t k = detail::kLawFlags;
   for (double ContactLaw::*member : detail::kLawNumbers) law.*member = record[k++];
   legacy.model = static_cast<LegacyModel>(model);

@@ -33,8 +33,9 @@
 ///   independent: |F_t| <= mu F_c and |M| <= mu_w F_c separately, mu_w =
 ///                (2/3) a mu (Marshall) or as given (sds) (LAMMPS' pair
 ///                granular, the same arithmetic in the same order);
-///   coupled:     (F_t, M) in mu F_c L, L spinslide's exact limit set of a
-///                Hertzian patch: outside it, the trial is replaced by its
+///   coupled:     (F_t, M) in mu F_c L, L spinslide's exact limit set of the
+///                patch's pressure profile (Hertz's unless the `profile`
+///                keyword names another; patch_profile): outside it, the trial is replaced by its
 ///                nearest point of mu F_c L in the springs' energy metric
 ///                |dF|^2/k_t + |dM|^2/k_w (a tangential spring and
 ///                Marshall's twisting spring only).
@@ -50,6 +51,7 @@
 #include "granular_model.h"
 
 #include <spinslide/contact/trial_cap.hpp>
+#include <spinslide/values/contact_profile.hpp>
 #include <spinslide/values/profile.hpp>
 
 #include <array>
@@ -120,11 +122,6 @@ namespace detail {
 // A spring's trial state is turned into the contact's plane only when its
 // normal component matters against the friction limit (relative threshold).
 constexpr double kFrameTolerance = 1e-10;
-
-inline const spinslide::hertz<double>& hertz_patch() {
-  static const spinslide::hertz<double> patch{};
-  return patch;
-}
 
 // The normal force and what the friction needs of it.
 struct NormalForce {
@@ -241,7 +238,7 @@ struct Springs {
   double k_tw, damp_tw;  // twisting
 };
 
-// The coupled cap on spinslide's Hertz limit set, at the load `load` = mu N
+// The coupled cap on the limit set of the patch's `profile`, at the load `load` = mu N
 // with patch radius a: spinslide::cap_trial_state (trial_cap.hpp) on the
 // springs h (already rotated and stretched) and the damping, which keeps
 // the trial if it sticks and otherwise caps it in the springs' energy
@@ -250,8 +247,9 @@ struct Springs {
 // friction fs and twisting torque mt out; true if capped.  It raises no
 // error for numerical reasons; a non-finite input (lost atoms) is a domain
 // error.
-inline bool friction_coupled(double* h, const double* vtr, double twist_rate, const Springs& k,
-                             double load, double a, double* fs, double& mt) {
+inline bool friction_coupled(const spinslide::contact_profile<double>& profile, double* h,
+                             const double* vtr, double twist_rate, const Springs& k, double load,
+                             double a, double* fs, double& mt) {
   // No trial friction (a new contact, an exact touch with a = 0): nothing
   // to cap, nothing to rewrite.
   const double trial_force[3] = {-k.kt * h[0] - k.damp_t * vtr[0], -k.kt * h[1] - k.damp_t * vtr[1],
@@ -280,9 +278,10 @@ inline bool friction_coupled(double* h, const double* vtr, double twist_rate, co
                                                  spinslide::normal_force<double>{load},
                                                  spinslide::friction_coefficient<double>{1.0}};
   const double* c = h + kHistRatio;
-  const auto r =
-      spinslide::cap_trial_state(hertz_patch(), trial, springs, contact,
-                                 spinslide::curve_point<double>{c[0], c[1], c[2], c[3], c[4]});
+  const spinslide::curve_point<double> start{c[0], c[1], c[2], c[3], c[4]};
+  const auto r = profile.visit([&](const auto& patch) {
+    return spinslide::cap_trial_state(patch, trial, springs, contact, start);
+  });
   for (int i = 0; i < 3; ++i) {
     fs[i] = r.force[i];
     h[i] = r.displacement[i];
@@ -324,6 +323,25 @@ inline void rolling_resistance(const ContactLaw& law, const ContactState& s, dou
 
 }  // namespace detail
 
+/// The profile of `law`'s patch (its `profile` keyword, checked by
+/// check_law) as spinslide's run-time handle, whose limit set the coupled
+/// cap projects onto.
+inline spinslide::contact_profile<double> patch_profile(const ContactLaw& law) {
+  switch (law.profile) {
+    case PatchProfile::kDisk:
+      return spinslide::uniform_disk<double>{};
+    case PatchProfile::kRing:
+      return spinslide::ring<double>{};
+    case PatchProfile::kBoussinesq:
+      return spinslide::boussinesq<double>{};
+    case PatchProfile::kAnnulus:
+      return spinslide::annulus<double>{law.annulus_inner};
+    case PatchProfile::kHertz:
+      break;
+  }
+  return spinslide::hertz<double>{};
+}
+
 /// One contact's forces from its state and history (kHistSize values),
 /// advancing the springs by dt if `advance` (not during LAMMPS' setup), the
 /// friction capped together (`coupled`, where the law has a tangential
@@ -364,8 +382,8 @@ inline void contact_force(const ContactLaw& law, const ContactState& s, double* 
 
   if (coupled && law.couplable()) {
     try {
-      out.capped =
-          detail::friction_coupled(history, vtr, s.twist_rate, k, fscrit, a, out.fs, out.mt);
+      out.capped = detail::friction_coupled(patch_profile(law), history, vtr, s.twist_rate, k,
+                                            fscrit, a, out.fs, out.mt);
     } catch (std::exception& e) {
       // Only a non-finite input reaches here (the cap raises nothing for
       // numerical reasons): lost atoms or a broken overlap.

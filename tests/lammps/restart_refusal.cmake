@@ -4,8 +4,9 @@
 # engines/lammps/examples/in.restart written to a restart file, then that
 # file read back without pair_style and pair_coeff (-var coeffs restart):
 #   - as written: it must be read (the pair restored, the run goes on);
-#   - with the layout number after the section's magic set to 2 (a newer
-#     plugin's layout): LAMMPS must stop with the plugin's layout error;
+#   - with the layout number after the section's magic set to 3 (a newer
+#     plugin's layout) or to 1 (the layout before the `profile` keyword):
+#     LAMMPS must stop with the plugin's layout error;
 #   - with the magic changed: LAMMPS must stop with the plugin's marker
 #     error.
 # The file is patched by PYTHON (the magic 0x5350534C, little-endian on the
@@ -39,13 +40,13 @@ magic = (0x5350534C).to_bytes(4, 'little')
 if data.count(magic) != 1:
     sys.exit('the magic occurs %d times' % data.count(magic))
 at = data.index(magic)
-if what == 'layout':
-    data[at + 4:at + 8] = (2).to_bytes(4, 'little')
+if what in ('newer', 'older'):
+    data[at + 4:at + 8] = (3 if what == 'newer' else 1).to_bytes(4, 'little')
 else:
     data[at:at + 4] = (0x12345678).to_bytes(4, 'little')
 open(sys.argv[3], 'wb').write(bytes(data))
 ]=])
-foreach(what IN ITEMS layout magic)
+foreach(what IN ITEMS newer older magic)
   execute_process(COMMAND "${PYTHON}" -c "${patch}" written.restart ${what} ${what}.restart
                   WORKING_DIRECTORY "${DIR}" RESULT_VARIABLE patched)
   if(NOT patched EQUAL 0)
@@ -58,9 +59,10 @@ file(READ "${DIR}/log.written.read" log)
 if(NOT ran EQUAL 0 OR NOT log MATCHES "restoring pair style granular/spinslide from restart")
   message(FATAL_ERROR "restart_refusal.cmake: the unpatched file was not read (${DIR}/log.written.read)")
 endif()
-set(expected_layout "ERROR: Pair granular/spinslide: the restart file's pair section has layout 2, this plugin reads layout 1 only \\(the file was written by a newer plugin\\)")
+set(expected_newer "ERROR: Pair granular/spinslide: the restart file's pair section has layout 3, this plugin reads layout 2 only \\(the file was written by a newer plugin\\)")
+set(expected_older "ERROR: Pair granular/spinslide: the restart file's pair section has layout 1, this plugin reads layout 2 only \\(the file was written by another plugin\\)")
 set(expected_magic "ERROR: Pair granular/spinslide: the restart file's pair section does not start with granular/spinslide's marker")
-foreach(what IN ITEMS layout magic)
+foreach(what IN ITEMS newer older magic)
   lammps(read ${what})
   file(READ "${DIR}/log.${what}.read" log)
   if(ran EQUAL 0 OR NOT log MATCHES "${expected_${what}}")

@@ -7,8 +7,12 @@
 # reads a stop at the first step past the threshold, so its times are late by
 # up to one step, which exceeds 1 % for times below 0.02 (here only the
 # quantities not thrown, which stop at t = 0).
+# PROFILE (default hertz; "annulus 0.5" for the annulus) is the patch's
+# profile, given to both (-var profile, --profile); COUPLINGS (default
+# "yes;no") the runs compared.
 #   cmake -DLMP=... -DPLUGIN=... -DINPUT=... -DREFERENCE=... -DDIR=...
-#         [-DREL=0.01] [-DSTEP=0.0002] -P run_sphere_on_plane.cmake
+#         [-DREL=0.01] [-DSTEP=0.0002] [-DPROFILE=ring] [-DCOUPLINGS=yes]
+#         -P run_sphere_on_plane.cmake
 foreach(var LMP PLUGIN INPUT REFERENCE DIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run_sphere_on_plane.cmake: pass -D${var}=...")
@@ -20,6 +24,13 @@ endif()
 if(NOT DEFINED STEP)
   set(STEP 0.0002)
 endif()
+if(NOT DEFINED PROFILE)
+  set(PROFILE hertz)
+endif()
+if(NOT DEFINED COUPLINGS)
+  set(COUPLINGS yes no)
+endif()
+separate_arguments(profile_args UNIX_COMMAND "${PROFILE}")
 file(MAKE_DIRECTORY "${DIR}")
 
 # CMake has integer arithmetic only: times as integers in units of 1e-6 (the
@@ -64,7 +75,8 @@ function(parse_block text coupling prefix)
 endfunction()
 
 # the reference
-execute_process(COMMAND "${REFERENCE}" OUTPUT_VARIABLE ref_text RESULT_VARIABLE ran)
+execute_process(COMMAND "${REFERENCE}" --profile ${profile_args} OUTPUT_VARIABLE ref_text
+                RESULT_VARIABLE ran)
 file(WRITE "${DIR}/reference.txt" "${ref_text}")
 if(NOT ran EQUAL 0)
   message(FATAL_ERROR "run_sphere_on_plane.cmake: the reference failed (${ran})")
@@ -76,10 +88,10 @@ to_micro("${REL}" rel_ppm)  # REL in parts per 10^6
 
 set(failures 0)
 set(names "sliding (v_x = 1)" "spinning (w_z = 20)" "both")
-foreach(coupling yes no)
+foreach(coupling IN LISTS COUPLINGS)
   execute_process(
     COMMAND "${LMP}" -in "${INPUT}" -var plugin "${PLUGIN}" -var coupling ${coupling}
-            -log "log.${coupling}"
+            -var profile "${PROFILE}" -log "log.${coupling}"
     WORKING_DIRECTORY "${DIR}" OUTPUT_VARIABLE lmp_text RESULT_VARIABLE ran)
   if(NOT ran EQUAL 0)
     message(FATAL_ERROR

@@ -20,7 +20,8 @@
 // v_t = v + w x (-R z) the slip of the contact point (the friction acts at the
 // full radius R, as fix wall/gran's), xi and phi the springs, stretched by
 // v_t dt and w_z dt each step.  The trial (F_t, M) is capped at the load
-// mu |F_n| on the limit set of spinslide::hertz (coupling yes) or of
+// mu |F_n| on the limit set of spinslide::hertz (coupling yes; or of the
+// profile --profile names, as the input's `profile` keyword does) or of
 // spinslide::uncoupled_caps(2/3) (coupling no: |F_t| <= mu N, |M| <= (2/3) a mu N),
 // by spinslide::project_to_limit_set in the springs' energy metric (torque
 // weight a^2 k_t/k_w = 2); when capped, the springs are rewritten so that
@@ -35,10 +36,12 @@
 // time is the first step at which the signed slip along x, v_x - R w_y, or
 // the spin w_z is below 1e-3 (the input's rule).
 //
-//   sphere_on_plane_reference [dt]              the stop times, coupling yes and no
+//   sphere_on_plane_reference [dt] [--profile hertz|disk|ring|boussinesq|annulus b]
+//                                               the stop times, coupling yes and no
 //   sphere_on_plane_reference --convergence     the stop times for dt = 4e-5 ... 2.5e-6
 #include <spinslide/contact/limit_set.hpp>
 #include <spinslide/values/approximations.hpp>
+#include <spinslide/values/contact_profile.hpp>
 #include <spinslide/values/profile.hpp>
 
 #include <array>
@@ -47,7 +50,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -251,13 +256,12 @@ void print_block(const char* coupling, double dt, const std::array<stop_times, 3
 }
 
 // The rigid reduced models where they apply, and the normal contact's state.
-void print_sanity(double dt, const std::array<stop_times, 3>& coupled,
+void print_sanity(double dt, double top, const std::array<stop_times, 3>& coupled,
                   const std::array<stop_times, 3>& uncoupled) {
   const double weight = kMass * kGravity;
   const double overlap = std::pow(weight / (kNormalStiffness * std::sqrt(kRadius)), 2.0 / 3.0);
   const double a = std::sqrt(kRadius * overlap);
-  const double hertz_top = spinslide::hertz<double>().mean_radius();  // T(0) = 3 pi/16
-  const double spin_coupled = kThrows[1].wz * kInertia / (kMu * weight * a * hertz_top);
+  const double spin_coupled = kThrows[1].wz * kInertia / (kMu * weight * a * top);
   const double spin_uncoupled = kThrows[1].wz * kInertia / (kMu * weight * a * (2.0 / 3.0));
   const double slide = 2 * kThrows[0].vx / (7 * kMu * kGravity);
   std::printf("sanity (dt = %g):\n", dt);
@@ -274,21 +278,33 @@ void print_sanity(double dt, const std::array<stop_times, 3>& coupled,
       "(uncoupled)\n",
       slide, coupled[0].sliding, uncoupled[0].sliding);
   std::printf(
-      "  rigid pure spin w0 I/(mu m g a T(0)): coupled, T(0) = 3 pi/16: %.6f; integrated "
+      "  rigid pure spin w0 I/(mu m g a T(0)): coupled, T(0) = %.6f: %.6f; integrated "
       "%.6f (rel. %.2g)\n",
-      spin_coupled, coupled[1].spinning, coupled[1].spinning / spin_coupled - 1);
+      top, spin_coupled, coupled[1].spinning, coupled[1].spinning / spin_coupled - 1);
   std::printf("  rigid pure spin, uncoupled, T(0) = 2/3: %.6f; integrated %.6f (rel. %.2g)\n",
               spin_uncoupled, uncoupled[1].spinning, uncoupled[1].spinning / spin_uncoupled - 1);
 }
 
-void run(double dt) {
-  const spinslide::hertz<double> hertz;
+// The profile --profile names (Hertz's without it), or an error.
+spinslide::contact_profile<double> named_profile(const std::vector<std::string>& args) {
+  if (args.empty() || args[0] == "hertz") return spinslide::hertz<double>{};
+  if (args[0] == "disk") return spinslide::uniform_disk<double>{};
+  if (args[0] == "ring") return spinslide::ring<double>{};
+  if (args[0] == "boussinesq") return spinslide::boussinesq<double>{};
+  if (args[0] == "annulus" && args.size() == 2)
+    return spinslide::annulus<double>{std::strtod(args[1].c_str(), nullptr)};
+  throw std::invalid_argument("--profile: hertz, disk, ring, boussinesq or annulus b");
+}
+
+void run(double dt, const spinslide::contact_profile<double>& profile) {
   const spinslide::uncoupled_caps<double> caps(2.0 / 3.0);
-  const std::array<stop_times, 3> coupled = throw_all(hertz, dt);
+  const auto [coupled, top] = profile.visit([&](const auto& p) {
+    return std::make_pair(throw_all(p, dt), p.mean_radius());  // T(0) = mean radius
+  });
   const std::array<stop_times, 3> uncoupled = throw_all(caps, dt);
   print_block("yes", dt, coupled);
   print_block("no", dt, uncoupled);
-  print_sanity(dt, coupled, uncoupled);
+  print_sanity(dt, top, coupled, uncoupled);
 }
 
 void convergence() {
@@ -316,12 +332,23 @@ int main(int argc, char** argv) {
       convergence();
       return 0;
     }
-    const double dt = args.empty() ? 1e-5 : std::strtod(args[0].c_str(), nullptr);
-    if (!(dt > 0.0 && dt <= 1e-3)) {
-      std::fprintf(stderr, "usage: sphere_on_plane_reference [dt in (0, 1e-3]] | --convergence\n");
+    std::vector<std::string> profile_args;
+    std::size_t n = args.size();
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      if (args[i] == "--profile") {
+        profile_args.assign(args.begin() + static_cast<std::ptrdiff_t>(i) + 1, args.end());
+        n = i;
+        break;
+      }
+    }
+    const double dt = n == 0 ? 1e-5 : std::strtod(args[0].c_str(), nullptr);
+    if (n > 1 || !(dt > 0.0 && dt <= 1e-3) || (n < args.size() && profile_args.empty())) {
+      std::fprintf(stderr,
+                   "usage: sphere_on_plane_reference [dt in (0, 1e-3]] [--profile hertz|disk|"
+                   "ring|boussinesq|annulus b] | --convergence\n");
       return 2;
     }
-    run(dt);
+    run(dt, named_profile(profile_args));
     return 0;
   } catch (const std::exception& e) {  // a failed projection (a domain error)
     std::fprintf(stderr, "sphere_on_plane_reference: %s\n", e.what());

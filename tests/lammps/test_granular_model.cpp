@@ -147,6 +147,41 @@ TEST(GranularModel, ChecksTheNumbersAndTheCombinations) {
   EXPECT_EQ(why("hooke 1e4 1 tangential linear_nohistory 1 0.5 twisting sds 1 1 1"), "");
 }
 
+TEST(GranularModel, ReadsThePatchProfile) {
+  using spinslide_lammps::PatchProfile;
+  const std::string law = "hertz/material 1e5 1e3 0.3 tangential mindlin NULL 1 0.5 ";
+  EXPECT_EQ(parse(law + "twisting marshall").law.profile, PatchProfile::kHertz);  // default
+  const Parsed ring = parse(law + "profile ring twisting marshall coupling yes");
+  ASSERT_EQ(ring.why, "");
+  EXPECT_EQ(ring.law.profile, PatchProfile::kRing);
+  EXPECT_EQ(ring.law.twist, TwistModel::kMarshall);
+  EXPECT_EQ(ring.rest, (std::vector<std::string>{"coupling", "yes"}));
+  EXPECT_EQ(parse(law + "profile disk").law.profile, PatchProfile::kDisk);
+  EXPECT_EQ(parse(law + "profile boussinesq").law.profile, PatchProfile::kBoussinesq);
+  const Parsed annulus = parse(law + "profile annulus 0.25 cutoff 2");
+  ASSERT_EQ(annulus.why, "");
+  EXPECT_EQ(annulus.law.profile, PatchProfile::kAnnulus);
+  EXPECT_EQ(annulus.law.annulus_inner, 0.25);
+  EXPECT_EQ(annulus.rest, (std::vector<std::string>{"cutoff", "2"}));
+  EXPECT_EQ(spinslide_lammps::check_law(annulus.law), "");
+  // in the short form too, after the four numbers
+  Parsed s;
+  s.why = spinslide_lammps::parse_lammps_model(
+      spinslide_lammps::expand_short_form(words("1e5 1e3 0.3 0.5 profile ring")), number, s.law,
+      s.rest);
+  ASSERT_EQ(s.why, "");
+  EXPECT_EQ(s.law.profile, PatchProfile::kRing);
+  // refused, saying why
+  EXPECT_NE(parse(law + "profile square").why.find("square"), std::string::npos);
+  EXPECT_NE(parse(law + "profile").why, "");
+  EXPECT_NE(parse(law + "profile annulus").why.find("annulus"), std::string::npos);
+  EXPECT_NE(spinslide_lammps::check_law(parse(law + "profile annulus 1").law), "");
+  EXPECT_NE(spinslide_lammps::check_law(parse(law + "profile annulus -0.1").law), "");
+  // types of different profiles do not mix
+  EXPECT_FALSE(spinslide_lammps::same_forms(ring.law, annulus.law));
+  EXPECT_FALSE(spinslide_lammps::same_forms(annulus.law, parse(law + "profile annulus 0.5").law));
+}
+
 TEST(GranularModel, ResolvesTheMaterialConstants) {
   const double e = 1e5, nu = 0.3;
   const Parsed p = parse("hertz/material 1e5 0.8 0.3 tangential mindlin NULL 1 0.5 damping tsuji");

@@ -5,7 +5,7 @@
 // The LAMMPS plugin's restart record of one type pair
 // (engines/lammps/law_record.h, no LAMMPS needed): every field of the law,
 // the older style's law and the cutoff comes back as it was written, to the
-// bit; a record holding a value no law has is refused; layout 1's size is
+// bit; a record holding a value no law has is refused; layout 2's size is
 // fixed.
 #include "granular_model.h"
 #include "law_record.h"
@@ -50,6 +50,8 @@ ContactLaw unusual_law() {
   law.k_twist = 6.0 / 11.0;
   law.gamma_twist = 7.0 / 11.0;
   law.mu_twist = 8.0 / 11.0;
+  law.profile = spinslide_lammps::PatchProfile::kAnnulus;
+  law.annulus_inner = 9.0 / 11.0;
   return law;
 }
 
@@ -106,6 +108,8 @@ TEST(LawRecord, EveryFieldComesBackToTheBit) {
   EXPECT_EQ(read.k_twist, law.k_twist);
   EXPECT_EQ(read.gamma_twist, law.gamma_twist);
   EXPECT_EQ(read.mu_twist, law.mu_twist);
+  EXPECT_EQ(read.profile, law.profile);
+  EXPECT_EQ(read.annulus_inner, law.annulus_inner);
   EXPECT_EQ(read_legacy.model, legacy.model);
   EXPECT_EQ(read_legacy.kn, legacy.kn);
   EXPECT_EQ(read_legacy.kt, legacy.kt);
@@ -132,6 +136,7 @@ TEST(LawRecord, TheDefaultsComeBackToo) {
   EXPECT_TRUE(same_bits(record, again));
   EXPECT_EQ(read.normal, spinslide_lammps::NormalModel::kHertzMaterial);
   EXPECT_TRUE(read.kt_null);
+  EXPECT_EQ(read.profile, spinslide_lammps::PatchProfile::kHertz);
   EXPECT_EQ(read_legacy.model, spinslide_lammps::LegacyModel::kNone);
   EXPECT_EQ(cutoff, -1.0);
 }
@@ -139,9 +144,10 @@ TEST(LawRecord, TheDefaultsComeBackToo) {
 TEST(LawRecord, RefusesAValueNoLawHas) {
   Record good{};
   spinslide_lammps::pack_law(unusual_law(), unusual_legacy(), 1.0, good.data());
-  // the normal model, the twisting model, a flag, the older style's model
+  // the normal model, the twisting model, a flag, the profile, the older
+  // style's model
   const std::size_t legacy_model = kLawRecordSize - 8;
-  const std::array<std::size_t, 4> slots = {0, 3, 5, legacy_model};
+  const std::array<std::size_t, 5> slots = {0, 3, 5, 7, legacy_model};
   for (std::size_t slot : slots) {
     for (double bad : {-1.0, 0.5, 99.0}) {
       Record record = good;
@@ -155,12 +161,13 @@ TEST(LawRecord, RefusesAValueNoLawHas) {
   }
 }
 
-TEST(LawRecord, LayoutOneHasTwentyNineNumbers) {
-  // Layout 1 as written by the plugin: 7 + 14 numbers of the law, 2 + 5 of
-  // the older style's, the cutoff.  A record of another size needs another
-  // layout number (kRestartLayout), so that older plugins refuse it.
-  EXPECT_EQ(kLawRecordSize, 29u);
-  EXPECT_EQ(spinslide_lammps::kRestartLayout, 1);
+TEST(LawRecord, LayoutTwoHasThirtyOneNumbers) {
+  // Layout 2 as written by the plugin: 8 + 15 numbers of the law (layout 1
+  // had no profile: 7 + 14), 2 + 5 of the older style's, the cutoff.  A
+  // record of another size needs another layout number (kRestartLayout), so
+  // that older plugins refuse it.
+  EXPECT_EQ(kLawRecordSize, 31u);
+  EXPECT_EQ(spinslide_lammps::kRestartLayout, 2);
   EXPECT_EQ(spinslide_lammps::kRestartMagic, 0x5350534C);
 }
 
