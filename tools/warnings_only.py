@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""The compiler matrix's warnings-only pass (.ci/run; docs/reliability.md,
-"The compiler and sanitizer matrix").
+"""The warnings-only pass of the matrix's cells that CI leaves out
+(docs/reliability.md, "The compiler and sanitizer matrix"): by hand before a
+release.
 
     tools/warnings_only.py PRESET [JOBS]
 
@@ -13,8 +14,8 @@ linking or running anything.  Any warning is an error (-Werror): the pass
 fails, naming every source that failed with the compiler's output.
 
 The optimizer's own warnings are the release build's (-O3) concern, where
-.ci/run looks for them; this pass is for the front ends of both compilers in
-the newer standard.  Needs cmake and the preset's compiler; JOBS defaults to 2.
+.ci/run looks for them; this pass is for the front ends in the standard CI
+does not build them in.  Needs cmake and the preset's compiler; JOBS defaults to 2.
 """
 
 import json
