@@ -16,7 +16,7 @@
 #      (engines/<engine>/include/) need their engines' headers: their tests,
 #      engines/<engine>/tests/*.cpp, reach them, where the engines are installed
 #      (CI installs them; elsewhere their sources are skipped, with a note);
-#    - every test source: tests/**/*.cpp and engines/<engine>/tests/*.cpp, but tests/consume/ (the packaging
+#    - every test source: tests/**/*.cpp and engines/<engine>/tests/*.cpp (LAMMPS' too), but tests/consume/ (the packaging
 #      tests' outside projects) and tests/compile_fail/ (sources that must
 #      not compile; their tests compile them with -DMISUSE=n), today tests/*.cpp and tests/reference/*.cpp,
 #      with the compile commands of a clang++ Debug configuration of the
@@ -130,7 +130,7 @@ tu="$out/all_headers.cpp"
 joblist=("headers:c++17" "headers:c++20")
 missing=()
 mapfile -t test_sources < <({ find tests -name '*.cpp' -not -path 'tests/consume/*' -not -path 'tests/compile_fail/*'
-                             find engines/mujoco/tests engines/bullet/tests engines/box2d/tests -name '*.cpp'; } | LC_ALL=C sort)
+                             find engines/mujoco/tests engines/bullet/tests engines/box2d/tests engines/lammps/tests -name '*.cpp'; } | LC_ALL=C sort)
 # The Python package's extension sources (issue 29), where the lint build
 # configured it (pybind11 and numpy for /usr/bin/python3).
 for f in python/src/*.cpp; do

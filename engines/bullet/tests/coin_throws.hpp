@@ -2,8 +2,8 @@
 //  Distributed under the Boost Software License, Version 1.0.
 //
 // Thrown coins in Bullet against their exact stops: the one loop of
-// test_bullet_throws.cpp (the uniform coin) and test_bullet_profiles.cpp
-// (every profile, also against Bullet's float build).
+// test_bullet_throws.cpp (the uniform coin), test_bullet_profiles.cpp (every
+// profile) and test_bullet_float.cpp (Bullet's float build, a puck).
 #ifndef SPINSLIDE_ENGINES_BULLET_TESTS_COIN_THROWS_HPP
 #define SPINSLIDE_ENGINES_BULLET_TESTS_COIN_THROWS_HPP
 
@@ -29,19 +29,28 @@ struct stop_errors {
   int moved_again = 0;           ///< throws that moved again after coming to rest
 };
 
-/// Random throws of the steel coin of engines/bullet/examples/bullet_coin
+/// The thrown body: a steel cylinder on its face (γ = 1/2), and what counts
+/// as rest.  The default is the coin of engines/bullet/examples/bullet_coin.
+struct puck {
+  double radius = bullet_scene::coin_radius;
+  double half_thickness = bullet_scene::coin_half_thickness;
+  /// "At rest": the horizontal speed and R|ω| below this fraction of their starts.
+  double rest = 1e-6;
+};
+
+/// Random throws of `body`
 /// (v0* in [0.1, 2.1], ω0* in [0.1, 3.1], drawn from `rng`), coupled to the
 /// table by `friction`, stepped at `dt`, against the exact stop of the same
 /// throw of a disk whose pressure is `profile` (stop_time at γ = 1/2): "at
-/// rest" is both the horizontal speed and R|ω| below 1e-6 of their starts.
+/// rest" is both the horizontal speed and R|ω| below `body.rest` of their starts.
 template <class Profile>
 stop_errors run(const Profile& profile, const spinslide::pair_friction<double>& friction, double dt,
-                int throws, std::mt19937_64 rng) {
+                int throws, std::mt19937_64 rng, const puck& body = {}) {
   using bullet_scene::coin_mu;
-  using bullet_scene::coin_radius;
   using bullet_scene::g;
   constexpr double pi = 3.14159265358979323846;
-  const double thickness = 2 * bullet_scene::coin_half_thickness;
+  const double coin_radius = body.radius;
+  const double thickness = 2 * body.half_thickness;
   const double mass = 7850 * pi * coin_radius * coin_radius * thickness;
   std::uniform_real_distribution<double> u(0, 1);
   stop_errors out;
@@ -66,8 +75,8 @@ stop_errors run(const Profile& profile, const spinslide::pair_friction<double>& 
       const btVector3 v = coin->getLinearVelocity();
       const double w = double(coin->getAngularVelocity().z());
       EXPECT_TRUE(std::isfinite(double(v.x() + v.y() + v.z()) + w));
-      const bool rest =
-          std::hypot(double(v.x()), double(v.y())) < 1e-6 * v0 && std::fabs(w) < 1e-6 * w0;
+      const bool rest = std::hypot(double(v.x()), double(v.y())) < body.rest * v0 &&
+                        std::fabs(w) < body.rest * w0;
       if (rest && stopped < 0) stopped = i * dt;
       if (!rest && stopped >= 0) {
         again = true;

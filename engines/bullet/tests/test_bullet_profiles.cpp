@@ -8,9 +8,8 @@
 // to its table.  Each is checked against its own exact result: thrown coins
 // stop at the exact stop of a disk with that pressure (the library's throw
 // through its stop, γ = 1/2), as the uniform coin's do in
-// test_bullet_throws.cpp.  (Against Bullet's float build, btScalar = float,
-// the same throws stop 3 % to 50 % late even with the uniform disk at 1e-4
-// and 1e-3 s, and most never rest at 1e-5 s; issue 40's note.)
+// test_bullet_throws.cpp.  Bullet's float build: test_bullet_float.cpp
+// (float Bullet does not hold this coin on its face; a puck there).
 #include <btBulletDynamicsCommon.h>
 #include <gtest/gtest.h>
 #include <spinslide/contact/pair_friction.hpp>

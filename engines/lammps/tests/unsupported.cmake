@@ -1,5 +1,5 @@
 # The plugin refuses what it cannot do with a message that says why
-# (tests/lammps/in.unsupported): each case must fail with its message.
+# (engines/lammps/tests/in.unsupported): each case must fail with its message.
 #   cmake -DLMP=... -DPLUGIN=... -DINPUT=... -DDIR=... -P unsupported.cmake
 foreach(var LMP PLUGIN INPUT DIR)
   if(NOT DEFINED ${var})

@@ -6,7 +6,7 @@
 // arrays it allocates (lammps.pair_memory_usage, pair_memory.cmake): LAMMPS
 // prints, at each run's setup, "Per MPI rank memory allocation (min/avg/max)
 // = a | b | c Mbytes", the sum of every style's and fix's memory_usage().
-// The same input (tests/lammps/in.pair_memory) runs with 1 and with N atom
+// The same input (engines/lammps/tests/in.pair_memory) runs with 1 and with N atom
 // types, with granular/spinslide and with LAMMPS' own pair_style granular
 // (whose memory_usage() counts none of its per-type arrays: the control for
 // whatever else in LAMMPS grows with the types).  The growth of

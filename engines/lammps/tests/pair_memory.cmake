@@ -1,5 +1,5 @@
 # The pair's memory_usage() against the arrays it allocates
-# (check_pair_memory.cpp says how): tests/lammps/in.pair_memory with 1 and
+# (check_pair_memory.cpp says how): engines/lammps/tests/in.pair_memory with 1 and
 # NTYPES atom types, granular/spinslide and LAMMPS' pair_style granular.
 #   cmake -DLMP=... -DPLUGIN=... -DINPUT=... -DCHECK=... -DNTYPES=300 -DDIR=... -P pair_memory.cmake
 foreach(var LMP PLUGIN INPUT CHECK NTYPES DIR)
