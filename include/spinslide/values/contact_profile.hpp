@@ -57,7 +57,7 @@ class contact_profile {
   /// others): f is compiled for each alternative, and must return one type
   /// for all.  A chain of index tests, each call inlinable where f is
   /// (std::visit's table of function pointers is not: it cost a sticking
-  /// impulse 13 % more instructions, tools/impulse_instructions.sh).
+  /// impulse 13 % more instructions; tools/path_instructions.py).
   template <class F>
   decltype(auto) visit(F&& f) const {
     return visit_from<0>(f);

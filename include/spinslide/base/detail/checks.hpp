@@ -185,7 +185,7 @@ struct patch_values {
 /// Always inlined: through contact_profile every law is instantiated for
 /// each profile, so g++ stops inlining it (several callers), and the call
 /// with its run-time rules cost a sticking impulse 24 instructions, 10 %
-/// (tools/impulse_instructions.sh handle; inlined: within 3 % either way).
+/// (tools/path_instructions.py, impulse_handle; inlined: within 3 % either way).
 template <class Contact, class Policy>
 BOOST_FORCEINLINE auto checked_patch(const char* function, const Contact& c, const Policy& pol,
                                      argument_rule radius_rule = argument_rule::finite_positive) {

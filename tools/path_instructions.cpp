@@ -1,0 +1,249 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+// The driver of tools/path_instructions.py (issue 41; docs/performance.md,
+// "Instruction counts"): every path an engine's step calls, on fixed inputs,
+// each case's loop between callgrind's client requests (its count zeroed
+// before, dumped after under the case's name), so that one run under
+// `valgrind --tool=callgrind` counts them all.  Alone it runs the same loops
+// and prints the cases, their calls and the warm starts' offsets.
+//
+// The inputs, for each profile and type: the 64 ratios ε = 10^(−3 + 6i/63).
+//   force_torque   the profile's 𝓕, 𝓣 at each ratio: the unit of every ratio below.
+//   projection     project_to_limit_set(profile, f, t, 1) of C(ε) + 0.2(ε, 1),
+//                  whose answer is C(ε) (its displacement is along the normal).
+//   trial_cap      cap_trial_state of the DEM springs whose trial is that point,
+//                  in 3-D vectors (as the LAMMPS plugin calls it), weight 1.
+//   impulse        impulse_friction of the slips (ε cos ε, ε sin ε, 1) in a
+//                  coupled metric, a = μ = 1, Λ = 1e-3 (1e3 when sticking).
+//   impulse_handle the same through the run-time handle contact_profile, as
+//                  pair_friction and the engine adapters call it (double).
+// The modes:
+//   warm      from the stored state (the curve() a contact keeps) of the
+//             previous answer, which was the answer for ε·(1 + 1e-3) (the
+//             projections), or for the spin 1e-3 higher (the impulse);
+//   spread    the same with a previous answer 1–100 % off: ε·(1 + u)^±1, u
+//             log-uniform in [0.01, 1] (the impulse: the spin so scaled);
+//   cold      no stored state;
+//   sticking  a trial far inside the set: q·C(ε), q uniform in [0.1, 0.7]
+//             (the impulse: Λ = 1e3).
+// "loop" is the bare loop (read the inputs, add up the results), which the
+// script subtracts from every count.
+#include <spinslide/spinslide.hpp>
+
+#include <valgrind/callgrind.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace {
+
+using namespace spinslide;
+
+constexpr int repetitions = 4;
+enum class mode { warm, spread, cold, sticking };
+const char* const mode_names[] = {"warm", "spread", "cold", "sticking"};
+constexpr mode all_modes[] = {mode::warm, mode::spread, mode::cold, mode::sticking};
+
+// An opaque copy: the compiler can neither hoist a call out of the
+// repetitions nor drop its result.
+template <class T>
+T opaque(T v) {
+  __asm__ volatile("" : "+m"(v));
+  return v;
+}
+
+template <class Real>
+std::vector<Real> ratios() {
+  std::vector<Real> v;
+  for (int i = 0; i < 64; ++i) v.push_back(static_cast<Real>(std::pow(10.0, -3 + 6.0 * i / 63)));
+  return v;
+}
+
+// The previous answer's ratio factor of each input: 1 + 1e-3, or 1–100 % off
+// either way; the sticking factor q.
+std::vector<double> factors(mode m) {
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<double> f;
+  for (int i = 0; i < 64; ++i) {
+    const double u = std::pow(10.0, -2 + 2 * unit(rng));
+    if (m == mode::warm) f.push_back(1 + 1e-3);
+    if (m == mode::spread) f.push_back(i % 2 ? 1 + u : 1 / (1 + u));
+    if (m == mode::cold) f.push_back(1);
+    if (m == mode::sticking) f.push_back(0.1 + 0.6 * unit(rng));
+  }
+  return f;
+}
+
+// Counts `calls` runs of body(i) for i = 0 .. 63, `repetitions` times,
+// under the name `name`, and prints it.
+template <class Body>
+void count(const std::string& name, Body&& body) {
+  double sum = 0;
+  CALLGRIND_ZERO_STATS;
+  for (int r = 0; r < repetitions; ++r)
+    for (int i = 0; i < 64; ++i) sum += body(opaque(i));
+  CALLGRIND_DUMP_STATS_AT(name.c_str());
+  std::printf("case %s %d %g\n", name.c_str(), 64 * repetitions, sum);
+}
+
+// The median of |ratio/ε − 1| over the stored starts: how far off "warm" is.
+void print_offset(const std::string& name, std::vector<double> off) {
+  std::sort(off.begin(), off.end());
+  std::printf("offset %s %.3g\n", name.c_str(), off[off.size() / 2]);
+}
+
+template <class Real>
+struct planar_case {
+  Real force, torque;
+  curve_point<Real> start;
+};
+
+// The 2-D points of the projection and the trial cap, with their starts
+// (`project` gives the previous answer's curve() for a point).
+template <class Real, class Profile, class Project>
+std::vector<planar_case<Real>> planar_cases(const Profile& p, mode m, Project project) {
+  std::vector<planar_case<Real>> v;
+  const auto eps = ratios<Real>();
+  const auto f = factors(m);
+  for (int i = 0; i < 64; ++i) {
+    const auto c = p.force_torque(eps[i]);
+    if (m == mode::sticking) {
+      v.push_back({Real(f[i]) * c.force, c.torque * Real(f[i]), {}});
+      continue;
+    }
+    curve_point<Real> start{};
+    if (m != mode::cold) {
+      const Real e = eps[i] * Real(f[i]);
+      const auto prev = p.force_torque(e);
+      start = project(prev.force + Real(0.2) * e, prev.torque + Real(0.2), curve_point<Real>{});
+    }
+    v.push_back({c.force + Real(0.2) * eps[i], c.torque + Real(0.2), start});
+  }
+  return v;
+}
+
+template <class Real, class Profile>
+void projection(const std::string& tag, const Profile& p, mode m) {
+  auto project = [&](Real f, Real t, const curve_point<Real>& s) {
+    return project_to_limit_set(p, f, t, Real(1), s).curve();
+  };
+  const auto cases = planar_cases<Real>(p, m, project);
+  count("projection." + tag + "." + mode_names[int(m)], [&](int i) {
+    const auto& c = cases[i];
+    return double(project_to_limit_set(p, c.force, c.torque, Real(1), c.start).force);
+  });
+}
+
+// The trial cap as the LAMMPS plugin calls it: 3-vectors, a = N = μ = 1,
+// k_t = k_θ = 1 (the weight a²k_t/k_θ = 1), no damping; the trial force
+// f·(cos ε, sin ε, 0), torque t.
+template <class Real, class Profile>
+void trial_cap(const std::string& tag, const Profile& p, mode m) {
+  using vec = std::array<Real, 3>;
+  const spring_stiffness<Real> k{tangential_stiffness<Real>{1}, twisting_stiffness<Real>{1}};
+  const force_contact<Real> contact{patch_radius<Real>{1}, normal_force<Real>{1},
+                                    friction_coefficient<Real>{1}};
+  auto trial = [](Real f, Real t, Real angle) {
+    using std::cos;
+    using std::sin;
+    return spring_trial<vec, Real>{vec{-f * cos(angle), -f * sin(angle), 0}, -t, vec{}, 0};
+  };
+  auto cap = [&](Real f, Real t, const curve_point<Real>& s) {
+    return cap_trial_state(p, trial(f, t, Real(0.5)), k, contact, s).curve();
+  };
+  const auto cases = planar_cases<Real>(p, m, cap);
+  const auto eps = ratios<Real>();
+  count("trial_cap." + tag + "." + mode_names[int(m)], [&](int i) {
+    const auto& c = cases[i];
+    return double(cap_trial_state(p, trial(c.force, c.torque, eps[i]), k, contact, c.start).torque);
+  });
+}
+
+// Through the run-time handle (issue 40), as pair_friction and the engine
+// adapters call it, when `handle` is given.
+template <class Real, class Profile>
+void impulse(const std::string& tag, const Profile& p, mode m,
+             const contact_profile<Real>* handle = nullptr) {
+  const planar_metric<Real> w({{{2, Real(0.3), Real(0.2)},
+                                {Real(0.3), Real(1.5), Real(-0.1)},
+                                {Real(0.2), Real(-0.1), 3}}});
+  const impulse_contact<Real> load{patch_radius<Real>{1},
+                                   normal_impulse<Real>{Real(m == mode::sticking ? 1e3 : 1e-3)},
+                                   friction_coefficient<Real>{1}};
+  const auto eps = ratios<Real>();
+  const auto f = factors(m);
+  std::vector<std::array<Real, 2>> slips;
+  std::vector<curve_point<Real>> starts;
+  std::vector<double> off;
+  for (int i = 0; i < 64; ++i) {
+    using std::cos;
+    using std::sin;
+    slips.push_back({eps[i] * cos(eps[i]), eps[i] * sin(eps[i])});
+    curve_point<Real> s{};
+    if (m == mode::warm || m == mode::spread) {
+      s = impulse_friction(p, slips[i], Real(f[i]), w, load).curve();
+      const Real now = impulse_friction(p, slips[i], Real(1), w, load).ratio;
+      if (s.ratio > 0 && now > 0) off.push_back(std::fabs(double(s.ratio / now) - 1));
+    }
+    starts.push_back(s);
+  }
+  const std::string name =
+      std::string(handle ? "impulse_handle." : "impulse.") + tag + "." + mode_names[int(m)];
+  if (!off.empty()) print_offset(name, off);
+  if (handle) {
+    count(name, [&](int i) {
+      return double(handle->visit([&](const auto& q) {
+        return impulse_friction(q, slips[i], Real(1), w, load, starts[i]).torque;
+      }));
+    });
+    return;
+  }
+  count(name, [&](int i) {
+    return double(impulse_friction(p, slips[i], Real(1), w, load, starts[i]).torque);
+  });
+}
+
+template <class Real, class Profile>
+void profile_paths(const std::string& name, const Profile& p, bool planar) {
+  const std::string tag = name + "." + (sizeof(Real) == 4 ? "float" : "double");
+  const auto eps = ratios<Real>();
+  count("force_torque." + tag, [&](int i) { return double(p.force_torque(eps[i]).force); });
+  for (const mode m : all_modes) {
+    if (planar) projection<Real>(tag, p, m);
+    if (planar) trial_cap<Real>(tag, p, m);
+    impulse<Real>(tag, p, m);
+  }
+  if constexpr (std::is_same<Real, double>::value) {
+    const contact_profile<Real> handle(p);
+    for (const mode m : all_modes) impulse<Real>(tag, p, m, &handle);
+  }
+}
+
+template <class Real>
+void all_paths() {
+  const auto eps = ratios<Real>();
+  count(std::string("loop.") + (sizeof(Real) == 4 ? "float" : "double"),
+        [&](int i) { return double(eps[i]); });
+  profile_paths<Real>("disk", uniform_disk<Real>(), true);
+  profile_paths<Real>("hertz", hertz<Real>(), true);
+  profile_paths<Real>("boussinesq", boussinesq<Real>(), true);
+  const Real tolerance = sizeof(Real) == 4 ? Real(1e-6) : Real(1e-13);
+  profile_paths<Real>("tabulated", tabulated_profile<Real>(annulus<Real>(Real(0.3)), tolerance),
+                      true);
+}
+
+}  // namespace
+
+int main() {
+  all_paths<double>();
+  all_paths<float>();
+}
