@@ -133,7 +133,7 @@ const std::vector<double>& fast_hertz_inputs() {
   return xs;
 }
 template <bool Fast>
-spinslide::detail::elastic_value_slope<double> hertz_value_slope(double e) {
+spinslide::detail::value_slope<double> hertz_value_slope(double e) {
   using spinslide::detail::hertz_load;
   if (Fast) return spinslide::detail::elastic_value_and_slope<hertz_load, true>(e);
   return spinslide::detail::elastic_forms_value_and_slope<hertz_load, true>(e);

@@ -6,7 +6,7 @@
 docs/performance.md, "Instruction counts"), counted by callgrind: exact and
 deterministic, where timings move with the machine's load.
 
-    tools/path_instructions.py DRIVER [--budgets FILE | --markdown]
+    tools/path_instructions.py DRIVER [--budgets FILE [--lower-budgets] | --markdown]
 
 DRIVER is tools/path_instructions.cpp built with g++ -O3 -DNDEBUG
 -march=x86-64 -mtune=generic (the CMake target path_instructions does
@@ -17,10 +17,13 @@ path as a multiple of the same profile's force_torque in the same type.
 With --budgets, every path must have a line in FILE (path, goal, budget:
 multiples of force_torque) and is checked against its budget with 10 %
 room; the exit status is 1 if one exceeds it or has no line.  A budget above
-its goal is a goal not yet met, and the table says so.
+its goal is a goal not yet met, and the table says so.  --lower-budgets
+rewrites FILE with each budget lowered to the measured multiple (rounded up
+to two decimals; never below the goal, never raised): after a cut.
 """
 import argparse
 import glob
+import math
 import os
 import re
 import subprocess
@@ -103,10 +106,28 @@ def markdown(counts):
         print(f"| {path} | {profile} | {real} | {unit:.0f} | " + " | ".join(cells) + " |")
 
 
+def lower_budgets(path, counts):
+    """Rewrites the budget column of `path` after a cut (never raising one)."""
+    lines = []
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            word = line.split("#", 1)[0].split()
+            if len(word) == 3 and word[0] in counts and unit_of(word[0]):
+                goal, budget = float(word[1]), float(word[2])
+                measured = math.ceil(counts[word[0]] / counts[unit_of(word[0])] * 100) / 100
+                new = min(budget, max(goal, measured))
+                line = f"{word[0]:40} {word[1]:5} {new:g}\n"
+            lines.append(line)
+    with open(path, "w", encoding="utf-8") as f:
+        f.writelines(lines)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("driver")
     parser.add_argument("--budgets")
+    parser.add_argument("--lower-budgets", action="store_true",
+                        help="lower the budgets in the --budgets file to the counts measured")
     parser.add_argument("--markdown", action="store_true",
                         help="print a Markdown table of the counts instead")
     args = parser.parse_args()
@@ -114,6 +135,8 @@ def main():
     if args.markdown:
         markdown(counts)
         return 0
+    if args.lower_budgets and args.budgets:
+        lower_budgets(args.budgets, counts)
     budgets = read_budgets(args.budgets) if args.budgets else {}
     failed = []
     for case in sorted(counts):

@@ -55,10 +55,14 @@ struct two_feet {
 // each foot slides at ε = d/a along its circle, and the spin falls at the
 // constant rate μmg(d𝓕(ε) + a𝓣(ε))/I until it stops: the stop within 1 % at
 // Δt = 1e-5 s (measured +0.54 %: Bullet's two normal loads differ a little,
-// and the body drifts) and 3 % at 1e-4 s (measured +2.1 %; one foot after
-// the other gave +6.2 %; a centre shared by both feet had not stopped at
-// 1.2 exact stops).  The pair's report sums
-// both feet.
+// and the body drifts) and 8 % at 1e-4 s.  At 1e-4 s the stop depends on
+// the last digits of every step: the spin w0 = 5 changed by ±2e-13 relative
+// moved it from +2.1 % to +3.8 % and +4.4 %, and the disk's slope from its
+// table (issue 41; the impulses' answers moved by up to 6e-14 relative)
+// from +2.1 % to +3.1 %, and then +6.0 % and +6.1 % for the same changes
+// of w0; at 1e-5 s all six gave +0.541 %.  (One foot after the other gave
+// +6.2 %; a centre shared by both feet had not stopped at 1.2 exact
+// stops.)  The pair's report sums both feet.
 TEST(BulletAdapter, CompoundFeetSpunInPlaceStopAtTheExactTime) {
   for (const double dt : {1e-4, 1e-5}) {
     two_feet f;
@@ -82,7 +86,7 @@ TEST(BulletAdapter, CompoundFeetSpunInPlaceStopAtTheExactTime) {
       if (r.sticking) stopped = i * dt;
     }
     ASSERT_GT(stopped, 0) << dt;
-    EXPECT_NEAR(stopped / exact, 1, dt < 5e-5 ? 0.01 : 0.03) << dt;
+    EXPECT_NEAR(stopped / exact, 1, dt < 5e-5 ? 0.01 : 0.08) << dt;
   }
 }
 

@@ -56,6 +56,24 @@ class uniform_disk : public profile_base<uniform_disk<Real, Policy>, Real, Polic
   }
 };
 
+namespace detail {
+// The disk's 𝓕, 𝓣, 𝓕′ and 𝓕″ in one call, in float and double: its fast
+// table's polynomials and their derivatives (disk_fast_slope; 𝓕″ NaN near
+// ε = 1, where it diverges).  Other types take secants.
+template <class Real, class Policy>
+struct fused_value_slope<uniform_disk<Real, Policy>>
+    : std::integral_constant<bool, has_fast_disk<Real>::value> {
+  static constexpr bool bounded_curvature = has_fast_disk<Real>::value;
+  template <bool Curvature = true, class P>
+  static value_slope<Real> at(const P&, Real eps) {
+    const disk_fast_derivatives d = disk_fast_slope<Real, Curvature>(eps);
+    return {{static_cast<Real>(d.force), static_cast<Real>(d.torque)},
+            static_cast<Real>(d.slope),
+            static_cast<Real>(d.curvature)};
+  }
+};
+}  // namespace detail
+
 /// All the load on the rim r = 1 (theory (R3)):
 ///   ε < 1: 𝓕 = (2/π)(E − yK)/ε, 𝓣 = (2/π) E;  ε > 1: 𝓕 = (2/π) E, 𝓣 = (2/π) ε (E − yK),
 /// with modulus min(ε, 1/ε); 𝓕(ε) = 𝓣(1/ε).  ⟨r⟩ = ⟨1/r⟩ = ⟨r²⟩ = 1.
@@ -211,7 +229,7 @@ class boussinesq : public detail::elastic_profile<boussinesq<Real, Policy>, deta
 namespace detail {
 // 𝓕 ≤ 1, as profile_base::force_torque caps it.
 template <class Real>
-elastic_value_slope<Real> capped(elastic_value_slope<Real> r) {
+value_slope<Real> capped(value_slope<Real> r) {
   if (r.value.force > 1) r.value.force = 1;
   return r;
 }
@@ -221,7 +239,7 @@ template <class Load, bool BoundedCurvature>
 struct elastic_fused_value_slope : std::true_type {
   static constexpr bool bounded_curvature = BoundedCurvature;
   template <bool Curvature = true, class P>
-  static elastic_value_slope<typename P::value_type> at(const P&, typename P::value_type eps) {
+  static value_slope<typename P::value_type> at(const P&, typename P::value_type eps) {
     return capped(elastic_value_and_slope<Load, Curvature>(eps));
   }
 };

@@ -28,6 +28,7 @@
 #define SPINSLIDE_VALUES_DETAIL_ELASTIC_CLOSED_FORMS_HPP
 
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/values/detail/force_slope.hpp>
 #include <spinslide/values/detail/hertz_fast.hpp>
 #include <spinslide/values/disk.hpp>
 
@@ -288,21 +289,12 @@ force_torque_result<Real> elastic_at(Real eps, bool derivative) {
   return elastic_forms_at<Load>(eps, derivative);
 }
 
-// 𝓕, 𝓣, 𝓕′ and 𝓕″ at one ratio, for the limit-set projection, which needs
-// them at each step (force_slope.hpp, fused_value_slope).
-template <class Real>
-struct elastic_value_slope {
-  force_torque_result<Real> value;  // 𝓕, 𝓣
-  Real slope;                       // 𝓕′
-  Real curvature;                   // 𝓕″
-};
-
 // (E3) for the values and the derivatives together: the same sums as
 // elastic_series(ε, false) and elastic_series(ε, true), term for term, from
 // one z and one count (the count depends on z only), and 𝓕″ if asked for
 // (otherwise 0).
 template <class Load, bool Curvature, class Real>
-elastic_value_slope<Real> elastic_series_value_slope(Real eps) {
+value_slope<Real> elastic_series_value_slope(Real eps) {
   const auto& c = elastic_series_coefficients<Load, Real>();
   const Real k = 1 / eps, z = k * k;
   const std::size_t n = elastic_series_terms(c, z);
@@ -320,7 +312,7 @@ elastic_value_slope<Real> elastic_series_value_slope(Real eps) {
 // the derivative's series start and the values': 𝓕′ the same sum as
 // elastic_series(ε, true), term for term.
 template <class Load, bool Curvature, class Real>
-elastic_value_slope<Real> elastic_series_slope(Real eps) {
+value_slope<Real> elastic_series_slope(Real eps) {
   const auto& c = elastic_series_coefficients<Load, Real>();
   const Real k = 1 / eps, z = k * k;
   const std::size_t n = elastic_series_terms(c, z);
@@ -338,10 +330,10 @@ elastic_value_slope<Real> elastic_series_slope(Real eps) {
 // them; and 𝓕″ if Curvature (otherwise 0: the projection's safeguarded
 // search does without it, and the series' fourth sum would cost it 11 %).
 template <class Load, bool Curvature, class Real>
-elastic_value_slope<Real> elastic_forms_value_and_slope(Real eps) {
+value_slope<Real> elastic_forms_value_and_slope(Real eps) {
   using W = elastic_arithmetic<Real>;
   const W& e = eps;
-  elastic_value_slope<W> r;
+  value_slope<W> r;
   if (e <= 1) {
     r = {Load::inside(e), Load::inside_derivative(e).force,
          Curvature ? Load::inside_curvature(e) : W(0)};
@@ -363,7 +355,7 @@ elastic_value_slope<Real> elastic_forms_value_and_slope(Real eps) {
 
 // The same, by Hertz's fast path where it applies (elastic_at's branch).
 template <class Load, bool Curvature, class Real>
-elastic_value_slope<Real> elastic_value_and_slope(Real eps) {
+value_slope<Real> elastic_value_and_slope(Real eps) {
   using W = elastic_arithmetic<Real>;
   if constexpr (has_fast_elastic<Load, W>()) {
     const W& e = eps;

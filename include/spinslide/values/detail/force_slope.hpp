@@ -8,15 +8,28 @@
 // has_force_slope first and estimates the slope itself otherwise (the
 // limit-set projection takes secants).  The uniform disk's force_derivative
 // (disk.hpp) is not used there: through the Carlson forms it costs about 15
-// evaluations of the fast path's 𝓕 and 𝓣 (bench_disk), more than secants.
+// evaluations of the fast path's 𝓕 and 𝓣 (bench_disk); in float and double
+// the disk's slope comes with its values from its fast table instead
+// (fused_value_slope).
 #ifndef SPINSLIDE_VALUES_DETAIL_FORCE_SLOPE_HPP
 #define SPINSLIDE_VALUES_DETAIL_FORCE_SLOPE_HPP
+
+#include <spinslide/values/force_torque_result.hpp>
 
 #include <type_traits>
 #include <utility>
 
 namespace spinslide {
 namespace detail {
+
+// 𝓕, 𝓣, 𝓕′ and 𝓕″ at one ratio, for the limit-set projections, which need
+// them at each step (fused_value_slope below).
+template <class Real>
+struct value_slope {
+  force_torque_result<Real> value;  // 𝓕, 𝓣
+  Real slope;                       // 𝓕′
+  Real curvature;                   // 𝓕″ (NaN where the profile gives none to trust)
+};
 
 template <class P, class = void>
 struct has_member_force_derivative : std::false_type {};
@@ -33,13 +46,16 @@ constexpr bool has_force_slope() {
 }
 
 /// Specialized (true, with static at<Curvature = true>(p, ε) giving 𝓕, 𝓣, 𝓕′
-/// and, if Curvature, 𝓕″ together for 0 < ε < ∞) by profiles whose closed
-/// forms share work between the values and the derivatives (Hertz and
-/// Boussinesq, profile.hpp); the limit-set projection then takes them from
-/// one call.  𝓕, 𝓣 and 𝓕′ are those of force_torque and force_slope, bit
-/// for bit, with or without 𝓕″.  bounded_curvature
-/// says whether 𝓕″ is bounded (Hertz), so that the projection may take
-/// Halley's steps; Boussinesq's is unbounded at ε = 1.
+/// and, if Curvature, 𝓕″ together for 0 < ε < ∞, a value_slope) by profiles
+/// whose closed forms or tables share work between the values and the
+/// derivatives (Hertz and Boussinesq, and the uniform disk in float and
+/// double: profile.hpp); the limit-set projections then take them from one
+/// call.  𝓕 and 𝓣 are force_torque's bit for bit, with or without 𝓕″; 𝓕′
+/// is force_slope's where the profile has one (Hertz, Boussinesq), and the
+/// derivative of the fast table's polynomial for the disk (disk_fast.hpp).
+/// bounded_curvature says whether at() gives an 𝓕″ for Halley's steps:
+/// Hertz's is bounded; the disk's is NaN near ε = 1, where it diverges
+/// (Newton's step there); Boussinesq's is unbounded at ε = 1 and not given.
 template <class P>
 struct fused_value_slope : std::false_type {
   static constexpr bool bounded_curvature = false;
