@@ -10,21 +10,41 @@
 #ifndef SPINSLIDE_BASE_DETAIL_PRODUCT_HPP
 #define SPINSLIDE_BASE_DETAIL_PRODUCT_HPP
 
+#include <boost/config.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/config.hpp>
 #include <boost/math/tools/precision.hpp>
 
 #include <cmath>
+#include <cstddef>
 
 namespace spinslide {
 namespace detail {
+
+// The product of xs[0..n) with the binary exponents summed apart from the
+// mantissas (product's rare path, apart so that the common one inlines).
+template <class Real, std::size_t N>
+BOOST_NOINLINE Real product_by_exponents(const Real (&xs)[N], Real plain) {
+  BOOST_MATH_STD_USING
+  Real mantissa = 1;
+  int exponent = 0;
+  for (const Real& xi : xs) {
+    int e = 0;
+    mantissa *= frexp(xi, &e);  // each in [1/2, 1): no underflow for a few factors
+    exponent += e;
+  }
+  if (!(boost::math::isfinite)(mantissa)) return plain;  // an input is ∞ or NaN
+  return mantissa == 0 ? Real(0) : Real(ldexp(mantissa, exponent));
+}
 
 // x₁x₂⋯xₙ without spurious over- or underflow: where a partial product
 // leaves the normal range, the binary exponents are summed apart from the
 // mantissas, so the result is finite and normal whenever the true product is
 // (e.g. 1e300 · 1e300 · 1e-300).  Otherwise the plain product, in order.
+// Always inlined: the common path is a few products and comparisons, which
+// a call (one a slipping trial cap made) costs more than.
 template <class Real, class... Rest>
-Real product(Real x, Rest... rest) {
+BOOST_FORCEINLINE Real product(Real x, Rest... rest) {
   BOOST_MATH_STD_USING
   const Real xs[] = {x, rest...};
   const Real lo = boost::math::tools::min_value<Real>(), hi = boost::math::tools::max_value<Real>();
@@ -35,15 +55,7 @@ Real product(Real x, Rest... rest) {
     normal = normal && fabs(plain) >= lo && fabs(plain) <= hi;
   }
   if (normal) return plain;
-  Real mantissa = 1;
-  int exponent = 0;
-  for (const Real& xi : xs) {
-    int e = 0;
-    mantissa *= frexp(xi, &e);  // each in [1/2, 1): no underflow for a few factors
-    exponent += e;
-  }
-  if (!(boost::math::isfinite)(mantissa)) return plain;  // an input is ∞ or NaN
-  return mantissa == 0 ? Real(0) : Real(ldexp(mantissa, exponent));
+  return product_by_exponents(xs, plain);
 }
 
 }  // namespace detail

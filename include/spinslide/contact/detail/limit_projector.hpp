@@ -154,9 +154,9 @@ class limit_projector {
   // leaving `start` at its last ratio for the safeguarded search, as soon as
   // a step leaves the asymptotic regime: h not halved, a step of half the
   // ratio or more, or a slope that is not negative.  Otherwise it ends as
-  // that search does (the same sticking test on every sample, a convergence
-  // test for the step's order, the advance), so the result is the same to
-  // rounding.
+  // that search does (a convergence test for the step's order, the
+  // advance), so the result is the same to rounding; whether P sticks it
+  // decides at the root (at_root), not on every sample as the search does.
   bool warm_steps(Real& start, const curve_point<Real>* from, projection& result) {
     if constexpr (fused_value_slope<Profile>::value || has_force_slope<Profile>()) {
       if (!(well_scaled(start) && well_scaled(w_) && x_ <= scale_limit() && y_ <= scale_limit()))
@@ -181,11 +181,13 @@ class limit_projector {
   // (no sticking test, no convergence, and the next sample need not halve
   // its h): the point is the caller's, and every result rests on the
   // profile's own values.  A NaN 𝓕″ gives Newton's step (warm_step_from).
+  // A point's NaN or infinite value needs no test of its own: it makes the
+  // step NaN or infinite, which the test below refuses, or 0 (an infinite
+  // slope), which leaves `start` where it was.
   void step_from_point(const curve_point<Real>& c, Real& start) const {
     using std::fabs;
     warm_sample a{{c.ratio, {c.force, c.torque}, Real(0), c.slope}, c.curvature};
     a.h = (x_ - a.ft.force) - w_ * a.eps * (y_ - a.ft.torque);
-    if (!((boost::math::isfinite)(a.h) && (boost::math::isfinite)(a.slope))) return;
     const warm_step s = warm_step_from(a);
     const Real next = a.eps + s.delta;
     if (s.slope < 0 && fabs(s.delta) < a.eps / 2 && well_scaled(next)) start = next;
@@ -195,21 +197,20 @@ class limit_projector {
   // `last_h` advanced) or given up.
   warm_outcome warm_iteration(const warm_sample& a, Real& last_h, Real& next, projection& result) {
     using std::fabs;
-    if (inside_quadrilateral(a.ft)) return result = sticking(), warm_outcome::done;
-    if (a.h == 0) return result = on_sample(a, a.slope, a.curvature), warm_outcome::done;
+    if (a.h == 0) return result = at_root(a, a.slope, a.curvature), warm_outcome::done;
     // 1/ε does not wait for the evaluation: one division off the steps' path.
     const Real inverse = 1 / a.eps;
     const warm_step next_step = warm_step_from(a);
     if (!(next_step.slope < 0) || !(fabs(a.h) <= last_h / 2)) return warm_outcome::given_up;
     const Real r = fabs(next_step.delta) * inverse, next_eps = a.eps + next_step.delta;
     if (r <= boost::math::tools::epsilon<Real>())
-      return result = classify(a, a.slope, a.curvature), warm_outcome::done;
+      return result = at_root(a, a.slope, a.curvature), warm_outcome::done;
     const bool halley = next_step.order == 3;
     if (r * r * (halley ? r : Real(1)) <= converged_product()) {
       slope_ = a.slope;
       curvature_ = halley ? a.curvature : Real(0);
       const sample b = advance(a, next_eps);
-      return result = classify(b, b.slope, halley ? a.curvature : nan()), warm_outcome::done;
+      return result = at_root(b, b.slope, halley ? a.curvature : nan()), warm_outcome::done;
     }
     if (!(r < Real(0.5)) || !well_scaled(next_eps)) return warm_outcome::given_up;
     next = next_eps;
@@ -441,6 +442,17 @@ class limit_projector {
     return r;
   }
 
+  // A root of h (to rounding): P − C(ε) lies along the normal (ε, 1), outward
+  // (P is outside L, and C is its projection) or inward, where P sticks: the
+  // inward normal from C runs down and to the left, into L (below the
+  // decreasing curve, in the quadrant), and the outward one out of L
+  // (convex, with that normal).  Along the normal y − 𝓣 has the sign of
+  // x − 𝓕 (h = 0), so one comparison decides, where the quadrilateral's test
+  // (classify) takes six products.  With 𝓕′ and 𝓕″ as known.
+  projection at_root(const sample& a, Real slope, Real curvature) const {
+    if (a.ft.torque >= y_) return sticking();
+    return on_sample(a, slope, curvature);
+  }
   // A converged sample: sticking after all (inside its quadrilateral), else
   // the result, with 𝓕′ and 𝓕″ there as known.
   projection classify(const sample& a, Real slope, Real curvature) const {
