@@ -11,15 +11,11 @@
 // h(0) = x > 0 and h(∞) = −∞, and h changes sign once where P lies outside L
 // (§11), so the root is bracketed.  It is found by Newton's method in ε,
 // safeguarded by the bracket (bisection in ln ε, or a growing factor towards
-// an open side), with 𝓕′ in closed form where the profile has one
-// (force_slope.hpp: Hertz, Boussinesq), and otherwise from the secant of 𝓕
-// through the last two samples (a difference quotient for the first).
-//
-// Sticking is decided on the way, without a root: L contains the
-// quadrilateral (0, 0), (1, 0), C(ε), (0, ⟨r⟩) for every sample C(ε)
-// (convexity), so a point inside it sticks; that quadrilateral also contains
-// the rectangle [0, 𝓕] × [0, 𝓣] and so the inward normal of C(ε): a root on
-// P's inward normal is recognised at the latest when it is reached.
+// an open side), with 𝓕′ where the profile gives it (force_slope.hpp: Hertz,
+// Boussinesq, the disk's table), else the secant of 𝓕 through the last two
+// samples (a difference quotient for the first).  Sticking is decided on the
+// way: L contains the quadrilateral (0, 0), (1, 0), C(ε), (0, ⟨r⟩) of every
+// sample (convexity), and so the inward normal of C(ε) (in [0, 𝓕] × [0, 𝓣]).
 //
 // Where 𝓕 jumps (the uncoupled caps jump from 0 to 1 at ε = 0⁺), L has a
 // straight edge and the bracket closes on the jump without h reaching 0: the
@@ -155,8 +151,7 @@ class limit_projector {
   // a step leaves the asymptotic regime: h not halved, a step of half the
   // ratio or more, or a slope that is not negative.  Otherwise it ends as
   // that search does (a convergence test for the step's order, the
-  // advance), so the result is the same to rounding; whether P sticks it
-  // decides at the root (at_root), not on every sample as the search does.
+  // advance; sticking decided at the root, at_root): the same to rounding.
   bool warm_steps(Real& start, const curve_point<Real>* from, projection& result) {
     if constexpr (fused_value_slope<Profile>::value || has_force_slope<Profile>()) {
       if (!(well_scaled(start) && well_scaled(w_) && x_ <= scale_limit() && y_ <= scale_limit()))
@@ -180,10 +175,8 @@ class limit_projector {
   // left at the point's ratio otherwise.  Nothing is decided on this sample
   // (no sticking test, no convergence, and the next sample need not halve
   // its h): the point is the caller's, and every result rests on the
-  // profile's own values.  A NaN 𝓕″ gives Newton's step (warm_step_from).
-  // A point's NaN or infinite value needs no test of its own: it makes the
-  // step NaN or infinite, which the test below refuses, or 0 (an infinite
-  // slope), which leaves `start` where it was.
+  // profile's own values.  A NaN 𝓕″ gives Newton's step (warm_step_from); any
+  // other NaN or ∞ a step the test below refuses, or 0 (an infinite slope).
   void step_from_point(const curve_point<Real>& c, Real& start) const {
     using std::fabs;
     warm_sample a{{c.ratio, {c.force, c.torque}, Real(0), c.slope}, c.curvature};
@@ -442,13 +435,9 @@ class limit_projector {
     return r;
   }
 
-  // A root of h (to rounding): P − C(ε) lies along the normal (ε, 1), outward
-  // (P is outside L, and C is its projection) or inward, where P sticks: the
-  // inward normal from C runs down and to the left, into L (below the
-  // decreasing curve, in the quadrant), and the outward one out of L
-  // (convex, with that normal).  Along the normal y − 𝓣 has the sign of
-  // x − 𝓕 (h = 0), so one comparison decides, where the quadrilateral's test
-  // (classify) takes six products.  With 𝓕′ and 𝓕″ as known.
+  // A root of h: P − C(ε) lies along the normal (ε, 1), outward (C is P's
+  // projection) or inward (down and left, into L: P sticks), as y − 𝓣, of
+  // x − 𝓕's sign, says; one comparison for classify's six products.
   projection at_root(const sample& a, Real slope, Real curvature) const {
     if (a.ft.torque >= y_) return sticking();
     return on_sample(a, slope, curvature);
