@@ -77,6 +77,7 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
   for (int k = 0; k < nextra; ++k) pvector[k] = 0.0;
 
   double** x = atom->x;
+  const double* radius = atom->radius;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   // setup() computes forces without advancing the springs
@@ -107,6 +108,13 @@ void PairGranularSpinslide::compute(int eflag, int vflag) {
       const double delx = xi - x[j][0];
       const double dely = yi - x[j][1];
       const double delz = zi - x[j][2];
+      // Most neighbours are apart and were apart: no contact forms without
+      // an overlap in any model (JKR holds one beyond, but only one that
+      // touched), and a pair that did not touch has its history zeroed
+      // already (one_pair, when it came apart; LAMMPS, for a new
+      // neighbour).  Decided here, the common case costs a distance test.
+      const double radsum = radius[i] + radius[j];
+      if (touch[jj] == 0 && delx * delx + dely * dely + delz * delz >= radsum * radsum) continue;
       double* history = &allhistory[static_cast<std::ptrdiff_t>(kHistSize) * jj];
       spinslide_lammps::ContactForce cf;
       double fij[3];
