@@ -90,6 +90,9 @@ class limit_projector {
     if (warm_steps(start, from, warm)) return warm;
     lo_ = {Real(0), {Real(0), top_}, x_, Real(0)};
     hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0)};
+    previous_ = {};
+    reach_ = 8;
+    curvature_ = 0;
     sample a = evaluate(first_ratio(start));
     for (int i = 0; i < max_iterations; ++i) {
       if (inside_quadrilateral(a.ft)) return sticking();
@@ -486,12 +489,11 @@ class limit_projector {
 
   const Profile& profile_;
   Real x_, y_, w_, top_;
-  sample lo_{}, hi_{}, previous_{};
-  Real reach_ = 8;
-  Real slope_ = 0;      // 𝓕′ of the last Newton step (advance)
-  Real curvature_ = 0;  // 𝓕″ of the last step if it was Halley's, else 0 (advance)
+  sample lo_, hi_, previous_;  // the search's, set where it starts (not for a stick)
+  Real reach_;
+  Real slope_;      // 𝓕′ of the last Newton step (advance)
+  Real curvature_;  // 𝓕″ of the last step if it was Halley's, else 0 (advance)
 };
-
 }  // namespace detail
 }  // namespace spinslide
 
