@@ -105,6 +105,34 @@ TEST(Tabulated, ForceDerivativeOfTheTable) {
   EXPECT_THROW(disk.force_derivative(NAN), std::domain_error);
 }
 
+// The projections' fused step (issue 41; force_slope.hpp, fused_value_slope):
+// one piece gives force_torque's 𝓕 and 𝓣 and force_derivative's 𝓕′, bit for
+// bit, in double and float; no 𝓕″.
+template <class Real>
+void fused_step_at(const tabulated_profile<Real>& tab, Real e) {
+  const auto f = detail::fused_value_slope<tabulated_profile<Real>>::template at<true>(tab, e);
+  const auto ft = tab.force_torque(e);
+  EXPECT_EQ(f.value.force, ft.force) << e;
+  EXPECT_EQ(f.value.torque, ft.torque) << e;
+  EXPECT_EQ(f.slope, tab.force_derivative(e)) << e;
+  EXPECT_TRUE(std::isnan(f.curvature)) << e;
+}
+
+template <class Real>
+void fused_step_is_force_torque_and_slope() {
+  const tabulated_profile<Real> tab{annulus<Real>(Real(0.3)),
+                                    Real(sizeof(Real) == 4 ? 1e-6 : 1e-13)};
+  using fused = detail::fused_value_slope<tabulated_profile<Real>>;
+  static_assert(fused::value && !fused::bounded_curvature, "a table's step is fused, Newton's");
+  for (int i = 0; i <= 2000; ++i)
+    fused_step_at(tab, static_cast<Real>(std::pow(10.0, -6 + 12.0 * i / 2000)));
+}
+
+TEST(Tabulated, FusedStepIsForceTorqueAndForceDerivative) {
+  fused_step_is_force_torque_and_slope<double>();
+  fused_step_is_force_torque_and_slope<float>();
+}
+
 TEST(Tabulated, SharedBetweenThreadsGivesTheSerialResults) {
   const tabulated_profile<> tab{hertz<>()};
   std::vector<double> xs;

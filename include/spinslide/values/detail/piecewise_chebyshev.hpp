@@ -152,6 +152,25 @@ class piecewise_chebyshev_pair {
     return {value, slope * p.scale};
   }
 
+  /// Both approximations and their derivatives in t at t ∈ [0, 1] from one
+  /// piece: the values bit for bit operator()'s, the derivatives
+  /// with_slope's (the same Horner steps); no allocation.
+  struct values_and_slopes {
+    Real value0, value1, slope0, slope1;
+  };
+  values_and_slopes with_slopes(Real t) const {
+    const evaluation_piece& p = piece_at(t);
+    const Real x = (t - p.mid) * p.scale;
+    Real v0 = p.m[2 * Degree], v1 = p.m[2 * Degree + 1], d0 = 0, d1 = 0;
+    for (std::size_t k = Degree; k-- > 0;) {
+      d0 = d0 * x + v0;
+      v0 = v0 * x + p.m[2 * k];
+      d1 = d1 * x + v1;
+      v1 = v1 * x + p.m[2 * k + 1];
+    }
+    return {v0, v1, d0 * p.scale, d1 * p.scale};
+  }
+
   /// The Chebyshev form of both approximations at t (for tests of the
   /// monomial conversion).
   std::pair<Real, Real> chebyshev_value(Real t) const {
