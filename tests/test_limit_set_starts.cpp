@@ -258,8 +258,8 @@ TEST(LimitSet, NearbyStartInAMetricTakesFewEvaluations) {
 }
 
 // A sliding result's curve(): its ratio and values, with 𝓕′ there where the
-// profile has it in closed form (against the profile's own, to the order of
-// the last step's advance) and 𝓕″ after Halley's steps (Hertz; against the
+// profile gives it (against the profile's own, to the order of the last
+// step's advance) and 𝓕″ after Halley's steps (Hertz, the disk; against the
 // difference of 𝓕′); NaN otherwise, and all NaN when it sticks.
 TEST(LimitSet, ASlidingResultCarriesTheCurvePoint) {
   const hertz<> h;
@@ -285,14 +285,18 @@ TEST(LimitSet, ASlidingResultCarriesTheCurvePoint) {
       }
     }
   }
-  // The disk's 𝓕′ comes with its values from its fast table in double
-  // (fused_value_slope): reported, cold the last sample's as Hertz's; the
-  // search's steps are Newton's, so no 𝓕″.  In long double it takes
-  // secants, whose estimate is not reported.
+  // The disk's 𝓕′ and 𝓕″ come with its values from its fast table in double
+  // (fused_value_slope), and without a start the warm steps run from the
+  // guess: Halley's, as Hertz's.  In long double it takes secants, whose
+  // estimate is not reported.
   const auto disk = project_to_limit_set(uniform_disk<>(), 1.5, 1.0, 1.0);
   ASSERT_FALSE(disk.sticking);
   EXPECT_NEAR(disk.point.slope / spinslide::force_derivative(disk.ratio), 1, 1e-9);
-  EXPECT_TRUE(std::isnan(disk.point.curvature));
+  const double step = 1e-6 * disk.ratio;
+  const double second = (spinslide::force_derivative(disk.ratio + step) -
+                         spinslide::force_derivative(disk.ratio - step)) /
+                        (2 * step);
+  EXPECT_NEAR(disk.point.curvature / second, 1, 1e-6) << disk.ratio;
   const auto long_disk = project_to_limit_set(uniform_disk<long double>(), 1.5L, 1.0L, 1.0L);
   ASSERT_FALSE(long_disk.sticking);
   EXPECT_TRUE(std::isnan(long_disk.point.slope));

@@ -83,10 +83,11 @@ class limit_projector {
   }
 
  private:
-  // Apart from the tests above, so that a caller inlines those (a sticking
-  // contact, the common case, costs the triangle's test) and calls this.
+  // Apart from the tests above, so that a caller inlines those (a stick costs
+  // the triangle's test); warm steps first, without a start from the guess.
   projection project(Real start, const curve_point<Real>* from) {
     projection warm{};
+    if (!(start > 0 && start < inf())) start = first_ratio(start);
     if (warm_steps(start, from, warm)) return warm;
     lo_ = {Real(0), {Real(0), top_}, x_, Real(0)};
     hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0)};
@@ -114,8 +115,7 @@ class limit_projector {
   }
 
   static constexpr int max_iterations = 200;
-  // Warm steps before the safeguarded search takes over.
-  static constexpr int max_warm_iterations = 6;
+  static constexpr int max_warm_iterations = 6;  // before the safeguarded search
   struct sample {
     Real eps;  // ε (0 and ∞ at the bracket's initial sides)
     force_torque_result<Real> ft;
