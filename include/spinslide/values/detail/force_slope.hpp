@@ -50,9 +50,10 @@ constexpr bool has_force_slope() {
 /// whose closed forms or tables share work between the values and the
 /// derivatives (Hertz and Boussinesq, and the uniform disk in float and
 /// double: profile.hpp; a tabulated profile, without 𝓕″: tabulated.hpp);
-/// the limit-set projections then take them from one call.  𝓕 and 𝓣 are force_torque's bit for bit,
-/// with or without 𝓕″; 𝓕′ is force_slope's where the profile has one (Hertz, Boussinesq, a table),
-/// and the derivative of the fast table's polynomial for the disk (disk_fast.hpp).
+/// the limit-set projections then take them from one call.  𝓕 and 𝓣 are
+/// force_torque's bit for bit, with or without 𝓕″; 𝓕′ is force_slope's
+/// where the profile has one (Hertz, Boussinesq, a table), and the
+/// derivative of the fast table's polynomial for the disk (disk_fast.hpp).
 /// bounded_curvature says whether at() gives an 𝓕″ for Halley's steps:
 /// Hertz's is bounded; the disk's is NaN near ε = 1, where it diverges
 /// (Newton's step there); Boussinesq's is unbounded at ε = 1 and not given.

@@ -138,23 +138,9 @@ class piecewise_chebyshev_pair {
     return {s0, s1};
   }
 
-  /// One approximation (`which`: 0 the first, 1 the second) and its
-  /// derivative in t at t ∈ [0, 1] (Horner's scheme carrying the derivative
-  /// along); no allocation.
-  std::pair<Real, Real> with_slope(Real t, std::size_t which) const {
-    const evaluation_piece& p = piece_at(t);
-    const Real x = (t - p.mid) * p.scale;
-    Real value = p.m[2 * Degree + which], slope = 0;
-    for (std::size_t k = Degree; k-- > 0;) {
-      slope = slope * x + value;
-      value = value * x + p.m[2 * k + which];
-    }
-    return {value, slope * p.scale};
-  }
-
   /// Both approximations and their derivatives in t at t ∈ [0, 1] from one
-  /// piece: the values bit for bit operator()'s, the derivatives
-  /// with_slope's (the same Horner steps); no allocation.
+  /// piece (Horner's scheme carrying the derivatives along): the values bit
+  /// for bit operator()'s; no allocation.
   struct values_and_slopes {
     Real value0, value1, slope0, slope1;
   };
