@@ -5,7 +5,9 @@
 // returns over a fixed grid of inputs: 𝓕, 𝓣 and derivatives in float, double
 // and long double; every profile's force_torque and moments; the coupling
 // inverses; terminal_motion; 360 throws (stop time, distance, angle, ε at the
-// stop) and a trajectory; the contact law; the cylinder.  A refactor that
+// stop) and a trajectory; the contact law; the cylinder; the projections
+// onto the limit set (2-D, and 3-D in a metric) and the impulse law, without
+// a start and from the curve point of a neighbouring answer.  A refactor that
 // must not change behaviour is checked by diffing this output before and
 // after (docs/architecture.md, "Refactoring safely"):
 //
@@ -96,6 +98,40 @@ void throws(const std::string& name, const Profile& p, int count) {
   }
 }
 
+// The projections and the impulse law for a profile: the 2-D projection of
+// C(ε) + 0.2(ε, 1) (and 0.5·C(ε), inside), the 3-D projection of the wrench
+// 2(ε cos ε, ε sin ε, 1) in a coupled metric, and impulse_friction of the
+// slips (ε cos ε, ε sin ε) with spin 1 and Λ = 1e-3 (and 1e3, sticking),
+// each without a start and from the answer for a spin 1e-3 higher.
+template <class Profile>
+void projections(const std::string& name, const Profile& p) {
+  using namespace spinslide;
+  std::printf("projections %s\n", name.c_str());
+  const planar_metric<double> w({{{2, 0.3, 0.2}, {0.3, 1.5, -0.1}, {0.2, -0.1, 3}}});
+  for (int i = 0; i < 13; ++i) {
+    const double e = std::pow(10.0, -3 + 0.5 * i);
+    const auto c = p.force_torque(e);
+    const auto flat = project_to_limit_set(p, c.force + 0.2 * e, c.torque + 0.2, 1.0);
+    const auto inside = project_to_limit_set(p, 0.5 * c.force, 0.5 * c.torque, 1.0);
+    std::printf(" 2d %a: %a %a %a %d %a\n", e, flat.force, flat.torque, flat.ratio,
+                int(inside.sticking), inside.force);
+    const tangent_wrench<double> z{2 * e * std::cos(e), 2 * e * std::sin(e), 2.0};
+    const auto m = project_to_limit_set(p, z, w);
+    std::printf(" 3d %a: %a %a %a %a\n", e, m.force[0], m.force[1], m.torque, m.ratio);
+    const std::array<double, 2> v{e * std::cos(e), e * std::sin(e)};
+    for (const double load : {1e-3, 1e3}) {
+      const impulse_contact<double> k{patch_radius<double>{1}, normal_impulse<double>{load},
+                                      friction_coefficient<double>{1}};
+      const auto cold = impulse_friction(p, v, 1.0, w, k);
+      const auto warm =
+          impulse_friction(p, v, 1.0, w, k, impulse_friction(p, v, 1.001, w, k).curve());
+      std::printf(" impulse %a %g: %a %a %a %a %d | %a %a %a %a\n", e, load, cold.force[0],
+                  cold.force[1], cold.torque, cold.ratio, int(cold.sticking), warm.force[0],
+                  warm.force[1], warm.torque, warm.ratio);
+    }
+  }
+}
+
 }  // namespace
 
 int main() {
@@ -122,6 +158,11 @@ int main() {
   profile("pade", pade_approximation<>::matching(hertz<>()));
   const tabulated_profile<> table{hertz<>()};
   profile("tabulated(hertz)", table);
+  projections("uniform_disk", uniform_disk<>());
+  projections("hertz", hertz<>());
+  projections("boussinesq", boussinesq<>());
+  projections("tabulated(hertz)", table);
+  projections("annulus(0.5)", annulus<>(0.5));
 
   throws("uniform_disk", uniform_disk<>(), 80);
   throws("annulus(0.125)", annulus<>(0.125), 40);

@@ -73,15 +73,10 @@ impulse_result<Vec2, typename Profile::value_type> impulse_friction(
   using detail::argument_rule;
   using detail::checked;
   const typename Profile::policy_type pol;
-  const Real vx = checked(function, "velocity[0]", static_cast<Real>(detail::get<0>(velocity)),
-                          argument_rule::finite, pol);
-  const Real vy = checked(function, "velocity[1]", static_cast<Real>(detail::get<1>(velocity)),
-                          argument_rule::finite, pol);
-  const Real w = checked(function, "spin", spin, argument_rule::finite, pol);
-  const auto patch =
-      detail::checked_patch(function, contact, pol, argument_rule::finite_non_negative);
-  const Real a = patch.radius, n = patch.normal, mu = patch.friction;
-  const Real s0 = checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
+  const Real vx = static_cast<Real>(detail::get<0>(velocity)),
+             vy = static_cast<Real>(detail::get<1>(velocity)), w = spin;
+  const Real a = contact.radius.value, n = contact.normal.value, mu = contact.friction.value;
+  const Real s0 = start.ratio;
   impulse_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
                                  start};
   // Every output NaN where a check reported an error through a policy that
@@ -92,28 +87,36 @@ impulse_result<Vec2, typename Profile::value_type> impulse_friction(
     out.torque = out.ratio = bad;
     return out;
   };
-  if (detail::any_reported(vx, vy, w, a, n, mu, s0)) return reported(out.ratio);
+  // One test for good arguments; where it fails, the checks one by one
+  // report the first bad one.
+  if (!(detail::all_finite(vx, vy, w, a, n, mu) && a >= 0 && n >= 0 && mu >= 0 && s0 >= 0)) {
+    checked(function, "velocity[0]", vx, argument_rule::finite, pol);
+    checked(function, "velocity[1]", vy, argument_rule::finite, pol);
+    checked(function, "spin", w, argument_rule::finite, pol);
+    detail::checked_patch(function, contact, pol, argument_rule::finite_non_negative);
+    checked(function, "start.ratio", s0, argument_rule::non_negative, pol);
+    return reported(out.ratio);
+  }
   // The impulse that stops the contact, z = −W⁻¹s, and the set μΛ·S·L₃ with
   // S = diag(1, 1, a): in the limit set's units ẑ = S⁻¹z/(μΛ), in the metric
   // SWS (inverse S⁻¹W⁻¹S⁻¹), both positive definite since W is.
   const detail::vector3<Real> slip{vx, vy, w};
   detail::vector3<Real> stop = detail::multiply(inverse_mass.inverse(), slip);
-  for (Real& x : stop)
-    x = checked(function, "the stopping impulse -W^-1 (v, spin)", Real(-x), argument_rule::finite,
-                pol);
-  const Real load = checked(function, "contact.normal*contact.friction", Real(mu * n),
-                            argument_rule::finite, pol);
+  for (Real& x : stop) x = -x;
+  const Real load = mu * n;
   // The largest angular impulse, μΛa⟨r⟩, must be a number too (its exact
   // product only where the plain one overflows: an intermediate may).
   const Real top = profile.mean_radius();
-  const Real plain = load * (a * top);
-  const Real spin_load =
-      (boost::math::isfinite)(plain)
-          ? plain
-          : checked(function, "contact.normal*contact.friction*contact.radius*<r>",
-                    detail::product(load, a, top), argument_rule::finite, pol);
-  if (detail::any_reported(stop[0], stop[1], stop[2], load, spin_load))
-    return reported(load + stop[0] + stop[1] + stop[2] + spin_load);
+  if (!detail::all_finite(stop[0], stop[1], stop[2], load, Real(load * (a * top)))) {
+    for (Real& x : stop)
+      x = checked(function, "the stopping impulse -W^-1 (v, spin)", x, argument_rule::finite, pol);
+    const Real good_load =
+        checked(function, "contact.normal*contact.friction", load, argument_rule::finite, pol);
+    const Real spin_load = checked(function, "contact.normal*contact.friction*contact.radius*<r>",
+                                   detail::product(load, a, top), argument_rule::finite, pol);
+    if (detail::any_reported(stop[0], stop[1], stop[2], good_load, spin_load))
+      return reported(good_load + stop[0] + stop[1] + stop[2] + spin_load);
+  }
   if (load == 0 || (vx == 0 && vy == 0 && w == 0)) {
     out.sticking = vx == 0 && vy == 0 && w == 0;
     if (!out.sticking) out.ratio = detail::slip_ratio(Real(std::hypot(vx, vy)), a, w);

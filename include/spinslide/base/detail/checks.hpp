@@ -162,6 +162,14 @@ T checked_constructor_argument(const char* function, const char* name, T x, argu
   return checked(function, name, x, rule, constructor_policy<Policy>());
 }
 
+/// True if every one of `xs` is finite: x − x is 0 for a finite x and NaN
+/// for ±∞ or NaN, so one comparison tests them all (the entry points' test
+/// of good arguments, before any check one by one).
+template <class... T>
+bool all_finite(T... xs) {
+  return ((xs - xs) + ...) == 0;
+}
+
 /// True once any of `xs` is NaN: an earlier check reported an error through a
 /// policy that does not throw, and the entry point returns NaN rather than
 /// compute on (and report a second, different error).

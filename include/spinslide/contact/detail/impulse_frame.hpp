@@ -49,17 +49,33 @@ struct impulse_frame {
   matrix3<Real> metric, inverse;  // CWC and C⁻¹W⁻¹C⁻¹ (always set: scale_metric)
 };
 
-// CWC and its inverse for C = diag(1, 1, c).  (c² is normal for every c
-// used: a where SWS is well conditioned, W's own scale, whose square is a
-// ratio of W's diagonal entries, within its condition number, or 1.)
+// CWC and its inverse for C = diag(1, 1, c), divided and multiplied by
+// CWC's largest diagonal entry (metric_projector's own scaling, which then
+// finds that entry 1 and leaves them).  (c² is normal for every c used: a
+// where SWS is well conditioned, W's own scale, whose square is a ratio of
+// W's diagonal entries, within its condition number, or 1.)  Symmetric:
+// the upper triangle is computed and mirrored.
 template <class Real>
 void scale_metric(const planar_metric<Real>& w, Real c, impulse_frame<Real>& out) {
-  const Real scale[3] = {1, 1, c};
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) {
-      out.metric[i][j] = scale[i] * w.entries()[i][j] * scale[j];
-      out.inverse[i][j] = w.inverse()[i][j] / (scale[i] * scale[j]);
-    }
+  const auto& m = w.entries();
+  const auto& v = w.inverse();
+  const Real corner = c * m[2][2] * c;
+  const Real top = m[0][0] > m[1][1] ? (m[0][0] > corner ? m[0][0] : corner)
+                                     : (m[1][1] > corner ? m[1][1] : corner);
+  auto& a = out.metric;
+  auto& b = out.inverse;
+  a[0][0] = m[0][0] / top;
+  a[1][1] = m[1][1] / top;
+  a[2][2] = corner / top;
+  a[0][1] = a[1][0] = m[0][1] / top;
+  a[0][2] = a[2][0] = c * m[0][2] / top;
+  a[1][2] = a[2][1] = c * m[1][2] / top;
+  b[0][0] = v[0][0] * top;
+  b[1][1] = v[1][1] * top;
+  b[2][2] = v[2][2] / (c * c) * top;
+  b[0][1] = b[1][0] = v[0][1] * top;
+  b[0][2] = b[2][0] = v[0][2] / c * top;
+  b[1][2] = b[2][1] = v[1][2] / c * top;
   out.c = c;
 }
 

@@ -11,6 +11,8 @@
 
 #include <spinslide/contact/detail/vector3.hpp>
 
+#include <boost/config.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -89,24 +91,50 @@ vector3<Real> cholesky_solve(const matrix3<Real>& l, const vector3<Real>& b) {
   return x;
 }
 
-// x with A x = b for a symmetric A (its upper triangle is read), by the
-// adjugate: fewer dependent divisions than a factorization, for the Newton
-// steps of the metric projection (which need no more than a few digits).
-// False if the determinant is not positive and finite.
+// A symmetric 3×3 matrix by its upper triangle: the Newton steps' Hessians
+// (slip_newton.hpp).
 template <class Real>
-bool solve_symmetric(const matrix3<Real>& a, const vector3<Real>& b, vector3<Real>& x) {
-  const Real c00 = a[1][1] * a[2][2] - a[1][2] * a[1][2];
-  const Real c01 = a[0][2] * a[1][2] - a[0][1] * a[2][2];
-  const Real c02 = a[0][1] * a[1][2] - a[0][2] * a[1][1];
-  const Real c11 = a[0][0] * a[2][2] - a[0][2] * a[0][2];
-  const Real c12 = a[0][1] * a[0][2] - a[0][0] * a[1][2];
-  const Real c22 = a[0][0] * a[1][1] - a[0][1] * a[0][1];
-  const Real det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
+struct symmetric3 {
+  Real xx, xy, xz, yy, yz, zz;
+};
+
+// The upper triangle of a, plus the symmetric h.
+template <class Real>
+symmetric3<Real> upper_plus(const matrix3<Real>& a, const symmetric3<Real>& h) {
+  return {a[0][0] + h.xx, a[0][1] + h.xy, a[0][2] + h.xz,
+          a[1][1] + h.yy, a[1][2] + h.yz, a[2][2] + h.zz};
+}
+
+template <class Real>
+vector3<Real> multiply(const symmetric3<Real>& a, const vector3<Real>& x) {
+  return {a.xx * x[0] + a.xy * x[1] + a.xz * x[2], a.xy * x[0] + a.yy * x[1] + a.yz * x[2],
+          a.xz * x[0] + a.yz * x[1] + a.zz * x[2]};
+}
+
+// x with A x = b for a symmetric A, by the adjugate: fewer dependent
+// divisions than a factorization, for Newton's steps (which need no more
+// than a few digits).  False if the determinant is not positive and finite.
+template <class Real>
+BOOST_FORCEINLINE bool solve_symmetric(const symmetric3<Real>& a, const vector3<Real>& b,
+                                       vector3<Real>& x) {
+  const Real c00 = a.yy * a.zz - a.yz * a.yz;
+  const Real c01 = a.xz * a.yz - a.xy * a.zz;
+  const Real c02 = a.xy * a.yz - a.xz * a.yy;
+  const Real c11 = a.xx * a.zz - a.xz * a.xz;
+  const Real c12 = a.xy * a.xz - a.xx * a.yz;
+  const Real c22 = a.xx * a.yy - a.xy * a.xy;
+  const Real det = a.xx * c00 + a.xy * c01 + a.xz * c02;
   if (!(det > 0) || !(det < std::numeric_limits<Real>::infinity())) return false;
   const Real r = 1 / det;
   x = {(c00 * b[0] + c01 * b[1] + c02 * b[2]) * r, (c01 * b[0] + c11 * b[1] + c12 * b[2]) * r,
        (c02 * b[0] + c12 * b[1] + c22 * b[2]) * r};
   return true;
+}
+
+// The same for a matrix3, of which the upper triangle is read.
+template <class Real>
+bool solve_symmetric(const matrix3<Real>& a, const vector3<Real>& b, vector3<Real>& x) {
+  return solve_symmetric(upper_plus(a, symmetric3<Real>{}), b, x);
 }
 
 // A⁻¹ from its Cholesky factor, column by column.

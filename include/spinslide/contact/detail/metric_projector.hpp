@@ -28,6 +28,8 @@
 #include <spinslide/contact/detail/dissipation_hessian.hpp>
 #include <spinslide/contact/detail/limit_projector.hpp>
 #include <spinslide/contact/detail/matrix3.hpp>
+#include <spinslide/contact/detail/round_dissipation.hpp>
+#include <spinslide/contact/detail/slip_newton.hpp>
 #include <spinslide/contact/planar_metric.hpp>
 #include <spinslide/values/detail/force_slope.hpp>
 
@@ -55,17 +57,24 @@ class metric_projector {
   // positive definite (a planar_metric's, or derived from one).
   metric_projector(const Profile& profile, const vec& z, const matrix3<Real>& metric,
                    const matrix3<Real>& inverse)
-      : p_(profile), hessian_of_d_(profile), z_(z), m_(metric), inverse_(inverse) {
+      : p_(profile), hessian_of_d_(profile), z_(z), m_(&metric), inverse_(&inverse) {
     // The nearest point does not change if M is scaled: M/d and d·M⁻¹, d the
     // largest diagonal entry, keep s and Ψ away from over- and underflow
-    // for metrics of any size.
-    const Real d = (std::max)({m_[0][0], m_[1][1], m_[2][2]});
+    // for metrics of any size.  (The impulse law's frame comes so scaled, d
+    // = 1, and is read where it is.)
+    const Real d = (std::max)({metric[0][0], metric[1][1], metric[2][2]});
+    if (d == 1) return;
     for (std::size_t i = 0; i < 3; ++i)
       for (std::size_t j = 0; j < 3; ++j) {
-        m_[i][j] /= d;
-        inverse_[i][j] *= d;
+        scaled_m_[i][j] = metric[i][j] / d;
+        scaled_inverse_[i][j] = inverse[i][j] * d;
       }
+    m_ = &scaled_m_;
+    inverse_ = &scaled_inverse_;
   }
+  // (It points into itself: not to be copied.)
+  metric_projector(const metric_projector&) = delete;
+  metric_projector& operator=(const metric_projector&) = delete;
 
   // The projection; `start`: a ratio to search from (0 or ∞: none), or the
   // curve point `from` (at the ratio `start`, its 𝓕 and 𝓣 finite) that the
@@ -73,6 +82,10 @@ class metric_projector {
   projection operator()(Real start, const curve_point<Real>* from = nullptr) {
     using std::fabs;
     if (largest(z_) > far()) return support_point();
+    if constexpr (fused_value_slope<Profile>::value) {
+      projection quick;
+      if (fast(start, from, quick)) return quick;
+    }
     // With a start: if z lies beyond the support plane of L₃ with the normal
     // n at the start's curve point (zᵀn > D(n) = max over L₃ of pᵀn), z is
     // outside and n a descent direction: Newton from there, one evaluation
@@ -91,7 +104,7 @@ class metric_projector {
       const ray first = normal_ray(start, own.ft);
       const vec p0 = {own.ft.force * first.dx, own.ft.force * first.dy,
                       z_[2] < 0 ? Real(-own.ft.torque) : own.ft.torque};
-      const vec slip = multiply(m_, vec{z_[0] - p0[0], z_[1] - p0[1], z_[2] - p0[2]});
+      const vec slip = multiply(*m_, vec{z_[0] - p0[0], z_[1] - p0[1], z_[2] - p0[2]});
       const ray turned = normal_ray(start, own.ft, slip);
       const ray& r = turned.resolved ? turned : first;
       if (r.resolved) {
@@ -128,12 +141,48 @@ class metric_projector {
   }
   static Real epsilon() { return std::numeric_limits<Real>::epsilon(); }
 
+  // The fast path (slip_newton.hpp) from the start's values (the stored
+  // curve point's where it has 𝓕′ too, else the profile's at its ratio) or,
+  // without a start, from the ratio of the support point's normal Mz (the
+  // answer's, for a z far from the set); false where it declines.  The
+  // answer's curve point carries the 𝓕′ of the last iterate, within that
+  // step's first order of its ratio: a start for the next projection.
+  bool fast(Real start, const curve_point<Real>* from, projection& out) const {
+    using round = round_dissipation<Profile>;
+    using std::fabs;
+    const round d(p_);
+    typename round::values v;
+    bool evaluated = true;
+    if (start > 0 && start < std::numeric_limits<Real>::infinity()) {
+      if (from && (boost::math::isfinite)(from->force + from->torque + from->slope)) {
+        v = {start, {from->force, from->torque}, from->slope};
+        evaluated = false;
+      } else {
+        v = d.at_ratio(start);
+      }
+    } else {
+      const vec u = multiply(*m_, z_);
+      const Real guess = length(u[0], u[1]) / fabs(u[2]);
+      if (!(guess > 0 && guess < std::numeric_limits<Real>::infinity())) return false;
+      v = d.at_ratio(guess);
+    }
+    typename round::point x;
+    vec ms, step;
+    if (!d.start(z_, *m_, *inverse_, v, x, ms) ||
+        !slip_newton(d, z_, *inverse_, x, ms, evaluated, step))
+      return false;
+    const vec dp = multiply(x.hessian, step);
+    out = slip({x.grad[0] + dp[0], x.grad[1] + dp[1], x.grad[2] + dp[2]},
+               round::ratio_of(shifted(x.s, step, Real(1))), x.slope);
+    return true;
+  }
+
   // For z far from L₃: the point of L₃ whose outward normal is along
   // M(z − p) ≈ Mz, relatively within |p|/|z|: at the ratio
   // ε = |(Mz)_f|/|(Mz)_t| along (Mz)_f's direction and (Mz)_t's sign.
   projection support_point() const {
     const Real scale = largest(z_);
-    const vec u = multiply(m_, vec{z_[0] / scale, z_[1] / scale, z_[2] / scale});
+    const vec u = multiply(*m_, vec{z_[0] / scale, z_[1] / scale, z_[2] / scale});
     using std::fabs;
     const Real along = length(u[0], u[1]), across = fabs(u[2]);
     const Real eps = across > 0 ? Real(along / across) : std::numeric_limits<Real>::infinity();
@@ -180,7 +229,7 @@ class metric_projector {
   // The torque's weight relative to the force's for the 2-D start and test
   // (which one only changes the start: stick or slip does not depend on it).
   Real torque_weight() const {
-    const auto& m = m_;
+    const auto& m = *m_;
     const Real w = 2 * m[2][2] / (m[0][0] + m[1][1]);
     return (boost::math::isfinite)(w) && w > 0 ? w : Real(1);
   }
@@ -223,7 +272,7 @@ class metric_projector {
                 s[2] > 0   ? d.ft.torque
                 : s[2] < 0 ? Real(-d.ft.torque)
                            : Real(0)};
-    d.ms = multiply(inverse_, s);
+    d.ms = multiply(*inverse_, s);
     const Real quadratic = dot(s, d.ms) / 2,
                dissipation = d.along * d.ft.force + d.across * d.ft.torque;
     const Real linear = dot(z_, s);
@@ -239,7 +288,7 @@ class metric_projector {
   // would make the iteration collapse; so the caller starts there only if
   // Ψ < 0 (a curve point's values may not be the profile's).
   point_data ray_start(const ray& r, const own_values* known = nullptr) const {
-    const Real tau = r.gain / dot(r.n, multiply(inverse_, r.n));
+    const Real tau = r.gain / dot(r.n, multiply(*inverse_, r.n));
     return point({tau * r.n[0], tau * r.n[1], tau * r.n[2]}, known);
   }
 
@@ -295,7 +344,7 @@ class metric_projector {
     bool resolved = false;
     for (std::size_t i = 0; i < 3; ++i) {
       Real row = 0;
-      for (std::size_t j = 0; j < 3; ++j) row += fabs(inverse_[i][j] * x.s[j]);
+      for (std::size_t j = 0; j < 3; ++j) row += fabs((*inverse_)[i][j] * x.s[j]);
       const Real terms = row + fabs(x.grad_d[i]) + fabs(z_[i]);
       sum += g[i] * step[i];
       size += terms * fabs(step[i]);
@@ -386,9 +435,9 @@ class metric_projector {
   // δ = −(M⁻¹ + ∇²D)⁻¹∇Ψ, for ∇²D = `hd`.
   vec newton_step(matrix3<Real> h, const vec& g) const {
     for (std::size_t i = 0; i < 3; ++i)
-      for (std::size_t j = 0; j < 3; ++j) h[i][j] += inverse_[i][j];
+      for (std::size_t j = 0; j < 3; ++j) h[i][j] += (*inverse_)[i][j];
     vec step{};
-    if (!solve_symmetric(h, g, step)) solve_symmetric(inverse_, g, step);  // ∇²D not finite
+    if (!solve_symmetric(h, g, step)) solve_symmetric(*inverse_, g, step);  // ∇²D not finite
     for (Real& v : step) v = -v;
     return step;
   }
@@ -430,18 +479,19 @@ class metric_projector {
 
   // A slip to the curve point p = (force, torque) at ratio ε, with the curve
   // point the contact's next projection starts from (𝓕 = |p's force|, 𝓣 =
-  // |p's torque|; 𝓕′ and 𝓕″ unknown).
-  static projection slip(const vec& p, Real eps) {
+  // |p's torque|, 𝓕′ = `slope`, 𝓕″ unknown).
+  static projection slip(const vec& p, Real eps,
+                         Real slope = std::numeric_limits<Real>::quiet_NaN()) {
     using std::fabs;
-    using std::hypot;
-    return {{p[0], p[1]}, p[2], false, eps, {eps, Real(hypot(p[0], p[1])), Real(fabs(p[2]))}};
+    return {{p[0], p[1]}, p[2], false, eps, {eps, length(p[0], p[1]), Real(fabs(p[2])), slope}};
   }
 
   const Profile& p_;
   dissipation_hessian<Profile> hessian_of_d_;
   vec z_;
-  matrix3<Real> m_;
-  matrix3<Real> inverse_;
+  const matrix3<Real>* m_;
+  const matrix3<Real>* inverse_;
+  matrix3<Real> scaled_m_, scaled_inverse_;  // M and M⁻¹ when scaled here
 };
 
 }  // namespace detail
