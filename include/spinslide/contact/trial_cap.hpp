@@ -207,30 +207,32 @@ capped_friction<Vec, typename Profile::value_type> cap_trial_state(
   detail::checked_trial<Real> in{detail::read<n, Real>(trial.displacement),
                                  detail::read<n, Real>(trial.damping_force), trial.twist,
                                  trial.damping_torque};
-  for (Real& x : in.spring)
-    x = checked(function, "trial.displacement", x, argument_rule::finite, pol);
-  for (Real& x : in.damping)
-    x = checked(function, "trial.damping_force", x, argument_rule::finite, pol);
-  in.twist = checked(function, "trial.twist", in.twist, argument_rule::finite, pol);
-  in.damping_torque =
-      checked(function, "trial.damping_torque", in.damping_torque, argument_rule::finite, pol);
-  const tangential_stiffness<Real> kt{checked(function, "springs.tangential",
-                                              springs.tangential.value,
-                                              argument_rule::finite_positive, pol)};
-  const twisting_stiffness<Real> kw{checked(function, "springs.twisting", springs.twisting.value,
-                                            argument_rule::finite_positive, pol)};
-  const spring_stiffness<Real> k{kt, kw};
-  const auto patch = detail::checked_patch(function, contact, pol);
-  const Real s = checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
-  if (detail::any_reported(in.spring[0], in.spring[1], in.spring[2], in.damping[0], in.damping[1],
-                           in.damping[2], in.twist, in.damping_torque, k.tangential.value,
-                           k.twisting.value, patch.radius, patch.normal, patch.friction, s)) {
+  const Real kt = springs.tangential.value, kw = springs.twisting.value;
+  const Real a = contact.radius.value, normal = contact.normal.value;
+  const Real mu = contact.friction.value;
+  // One test for good arguments; where it fails, the checks one by one
+  // report the first bad one.
+  if (!(detail::all_finite(in.spring[0], in.spring[1], in.spring[2], in.damping[0], in.damping[1],
+                           in.damping[2], in.twist, in.damping_torque, kt, kw, a, normal, mu) &&
+        kt > 0 && kw > 0 && a > 0 && normal >= 0 && mu >= 0 && start.ratio >= 0)) {
+    for (const Real x : in.spring)
+      checked(function, "trial.displacement", x, argument_rule::finite, pol);
+    for (const Real x : in.damping)
+      checked(function, "trial.damping_force", x, argument_rule::finite, pol);
+    checked(function, "trial.twist", in.twist, argument_rule::finite, pol);
+    checked(function, "trial.damping_torque", in.damping_torque, argument_rule::finite, pol);
+    checked(function, "springs.tangential", kt, argument_rule::finite_positive, pol);
+    checked(function, "springs.twisting", kw, argument_rule::finite_positive, pol);
+    detail::checked_patch(function, contact, pol);
+    checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     capped_friction<Vec, Real> out{{Vec{}, nan, false, nan, start}, Vec{}, nan};
     for (Vec* v : {&out.force, &out.displacement})
       detail::write<n>(*v, detail::vector3<Real>{nan, nan, nan});
     return out;
   }
+  const spring_stiffness<Real> k{tangential_stiffness<Real>{kt}, twisting_stiffness<Real>{kw}};
+  const detail::patch_values<Real> patch{a, normal, mu};
   return detail::cap_checked<n, Vec>(profile, in, k, patch, start, function);
 }
 
