@@ -17,6 +17,7 @@
 #include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/spring_friction.hpp>
 #include <spinslide/contact/trial_cap.hpp>
+#include <spinslide/values/contact_profile.hpp>
 #include <spinslide/values/coupling.hpp>
 #include <spinslide/values/profile.hpp>
 
@@ -227,6 +228,88 @@ TEST(TrialCap, BadArgumentsAreDomainErrors) {
                                curve_point<double>{-1, 0, 0, 0, 0}),
                std::domain_error);
   EXPECT_NO_THROW(cap_trial_state(profile, good, springs(1e3, 0.05), contact(0.05, 1, 0.5)));
+}
+
+// surely_sticks is the inner triangle |F|/(μN) + |T|/(μNa⟨r⟩) ≤ 1 of the
+// trial (computed here in long double, away from its edge), and where it
+// holds cap_trial_state sticks and keeps the trial bit for bit; between the
+// triangle and the curve it decides nothing (false) while the cap sticks.
+// cap_trial_state on a profile, or on the one a contact_profile holds.
+template <class Profile, class... Args>
+auto cap_on(const Profile& profile, const Args&... args) {
+  return cap_trial_state(profile, args...);
+}
+template <class... Args>
+auto cap_on(const contact_profile<double>& handle, const Args&... args) {
+  return handle.visit([&](const auto& p) { return cap_trial_state(p, args...); });
+}
+
+template <class Profile>
+void expect_surely_sticks_is_the_triangle(const Profile& profile, long double mean_radius) {
+  std::mt19937_64 rng(12);
+  int sure = 0, left_to_the_cap = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const random_trial c = make_trial(rng);
+    const auto k2 = springs(c.kt, c.a);
+    const spring_stiffness<double> kk{k2.tangential, twisting_stiffness<double>{c.kw}};
+    const auto law = contact(c.a, c.n, c.mu);
+    const bool quick = surely_sticks(profile, c.trial, kk, law);
+    const long double fx = -(long double)c.kt * c.trial.displacement[0] + c.trial.damping_force[0];
+    const long double fy = -(long double)c.kt * c.trial.displacement[1] + c.trial.damping_force[1];
+    const long double t = -(long double)c.kw * c.trial.twist + c.trial.damping_torque;
+    const long double load = (long double)c.mu * c.n;
+    const long double side =
+        std::sqrt(fx * fx + fy * fy) / load + std::fabs(t) / (load * c.a * mean_radius);
+    if (std::fabs(side - 1) > 1e-12L) {
+      EXPECT_EQ(quick, side < 1) << k;
+    }
+    const auto r = cap_on(profile, c.trial, kk, law);
+    if (quick) {
+      ++sure;
+      ASSERT_TRUE(r.sticking) << k;
+      EXPECT_EQ(r.force[0], -c.kt * c.trial.displacement[0] + c.trial.damping_force[0]) << k;
+      EXPECT_EQ(r.force[1], -c.kt * c.trial.displacement[1] + c.trial.damping_force[1]) << k;
+      EXPECT_EQ(r.torque, -c.kw * c.trial.twist + c.trial.damping_torque) << k;
+      EXPECT_EQ(r.displacement[0], c.trial.displacement[0]) << k;
+      EXPECT_EQ(r.twist, c.trial.twist) << k;
+    } else if (r.sticking) {
+      ++left_to_the_cap;
+    }
+  }
+  EXPECT_GT(sure, 300);
+  EXPECT_GT(left_to_the_cap, 30);
+}
+
+TEST(TrialCap, SurelySticksIsTheInnerTriangle) {
+  expect_surely_sticks_is_the_triangle(hertz<>(), 3.0L * 3.14159265358979323846L / 16);
+  expect_surely_sticks_is_the_triangle(uniform_disk<>(), 2.0L / 3);
+  expect_surely_sticks_is_the_triangle(annulus<>(0.5), 14.0L / 18);
+  expect_surely_sticks_is_the_triangle(contact_profile<double>(hertz<>()),
+                                       3.0L * 3.14159265358979323846L / 16);
+}
+
+// It decides nothing for what cap_trial_state refuses (which says why).
+TEST(TrialCap, SurelySticksDecidesNothingForBadArguments) {
+  const hertz<> profile;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const spring_trial<vec2, double> good{{1e-6, 0}, 0, {0, 0}, 0};
+  EXPECT_TRUE(surely_sticks(profile, good, springs(1e3, 0.05), contact(0.05, 1, 0.5)));
+  EXPECT_FALSE(surely_sticks(profile, spring_trial<vec2, double>{{nan, 0}, 0, {0, 0}, 0},
+                             springs(1e3, 0.05), contact(0.05, 1, 0.5)));
+  EXPECT_FALSE(surely_sticks(profile, spring_trial<vec2, double>{{0, 0}, 0, {0, 0}, nan},
+                             springs(1e3, 0.05), contact(0.05, 1, 0.5)));
+  EXPECT_FALSE(surely_sticks(profile, good, springs(1e3, 0.05), contact(0.05, inf, 0.5)));
+  EXPECT_FALSE(surely_sticks(profile, good, springs(1e3, 0.05), contact(0.05, 1, inf)));
+  EXPECT_FALSE(surely_sticks(profile, good, springs(1e3, 0.05), contact(0.05, 0, 0.5)));
+  EXPECT_FALSE(surely_sticks(profile, good, springs(1e3, 0.05), contact(0, 1, 0.5)));
+  EXPECT_FALSE(surely_sticks(profile, good, springs(1e3, 0.05), contact(inf, 1, 0.5)));
+  const spring_stiffness<double> soft{tangential_stiffness<double>{1e3},
+                                      twisting_stiffness<double>{0}};
+  EXPECT_FALSE(surely_sticks(profile, good, soft, contact(0.05, 1, 0.5)));
+  const spring_stiffness<double> stiff{tangential_stiffness<double>{inf},
+                                       twisting_stiffness<double>{1}};
+  EXPECT_FALSE(surely_sticks(profile, good, stiff, contact(0.05, 1, 0.5)));
 }
 
 // float as double, to float's rounding.

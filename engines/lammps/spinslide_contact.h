@@ -277,6 +277,14 @@ inline bool friction_coupled(const spinslide::contact_profile<double>& profile, 
   const spinslide::force_contact<double> contact{spinslide::patch_radius<double>{a},
                                                  spinslide::normal_force<double>{load},
                                                  spinslide::friction_coefficient<double>{1.0}};
+  // Most contacts of a pile or a pour stick inside the inner triangle of
+  // every limit set: the trial is the friction and the springs stay, as
+  // cap_trial_state decides by the same test first (here without its call).
+  if (spinslide::surely_sticks(profile, trial, springs, contact)) {
+    for (int i = 0; i < 3; ++i) fs[i] = trial_force[i];
+    mt = trial_torque;
+    return false;
+  }
   const double* c = h + kHistRatio;
   const spinslide::curve_point<double> start{c[0], c[1], c[2], c[3], c[4]};
   const auto r = profile.visit([&](const auto& patch) {

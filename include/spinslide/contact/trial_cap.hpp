@@ -178,6 +178,42 @@ capped_friction<Vec, typename Profile::value_type> cap_checked(
 
 }  // namespace detail
 
+/// Whether a DEM contact's trial surely sticks: its trial force −k_t ξ + F_d
+/// and torque −k_θ φ + T_d lie in the inner triangle |F|/(μN) + |T|/(μNa⟨r⟩)
+/// ≤ 1, which every profile's limit set contains.  There cap_trial_state
+/// decides the same by the same arithmetic, first, and keeps the trial: the
+/// friction is the trial force and torque, and the springs stay as they
+/// are.  A DEM loop whose contacts mostly stick (a pile, most of a pour)
+/// can test this first and skip the call.  False, deciding nothing,
+/// outside the triangle and for any trial, springs or contact that
+/// cap_trial_state refuses (nothing is reported here: call it to hear
+/// why).
+/// `profile` is any profile or a contact_profile (its ⟨r⟩ only is read).
+template <class Profile, class Vec>
+bool surely_sticks(const Profile& profile,
+                   const spring_trial<Vec, typename Profile::value_type>& trial,
+                   const spring_stiffness<typename Profile::value_type>& springs,
+                   const force_contact<typename Profile::value_type>& contact) {
+  using Real = typename Profile::value_type;
+  constexpr int n = detail::components<Vec>();
+  static_assert(detail::is_vector<Vec, 2>() && (n == 2 || n == 3),
+                "spinslide::surely_sticks: the spring and the damping force must be 2- or "
+                "3-component vector classes (operator[] or members x, y[, z])");
+  using std::fabs;
+  const detail::vector3<Real> spring = detail::read<n, Real>(trial.displacement),
+                              damping = detail::read<n, Real>(trial.damping_force);
+  const Real kt = springs.tangential.value, kw = springs.twisting.value;
+  const Real a = contact.radius.value, load = contact.friction.value * contact.normal.value;
+  detail::vector3<Real> force{};
+  for (std::size_t i = 0; i < std::size_t(n); ++i) force[i] = -kt * spring[i] + damping[i];
+  const Real t = -kw * trial.twist + trial.damping_torque;
+  const Real x = detail::vector_norm(force[0], force[1], force[2]) / load, y = fabs(t) / a / load;
+  const Real weight = a * a * kt / kw;  // cap_trial_state's torque weight, > 0 and finite
+  return kt > 0 && kw > 0 && a > 0 && load > 0 && weight > 0 &&
+         detail::all_finite(x, y, load, weight) &&
+         detail::in_sticking_triangle(x, y, profile.mean_radius());
+}
+
 /// The trial state `trial` of a DEM contact capped on `profile`'s limit set
 /// (see the file's comment), searching from `start`, the contact's last
 /// slip's curve_point (the last result's curve(); a point with ratio 0, as

@@ -63,6 +63,11 @@ class contact_profile {
     return visit_from<0>(f);
   }
 
+  /// ⟨r⟩ of the profile held (profile_concept.hpp).
+  Real mean_radius() const {
+    return visit([](const auto& p) { return p.mean_radius(); });
+  }
+
   /// True if the profile is held behind the virtual interface (no fast path).
   bool erased() const { return std::holds_alternative<erased_profile<Real>>(profile_); }
 
