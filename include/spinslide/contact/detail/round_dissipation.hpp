@@ -126,7 +126,7 @@ class round_dissipation {
     static const Real low = boost::math::tools::min_value<Real>(),
                       high = boost::math::tools::max_value<Real>();
     const Real f2 = s[0] * s[0] + s[1] * s[1], t2 = s[2] * s[2];
-    if (!((f2 >= low) & (f2 <= high) & (t2 >= low) & (t2 <= high))) return false;
+    if (!(f2 >= low && f2 <= high && t2 >= low && t2 <= high)) return false;
     x.s = s;
     x.along = sqrt(f2);
     x.across = fabs(s[2]);
