@@ -33,6 +33,7 @@
 #include <spinslide/contact/detail/vector3.hpp>
 #include <spinslide/contact/limit_set.hpp>
 
+#include <boost/config.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
 
 #include <cmath>
@@ -67,7 +68,8 @@ struct capped_friction : friction_result<Vec, Real> {
 
 namespace detail {
 
-// A trial state's numbers, checked: ξ and F_d with a z of 0 in 2-D.
+// A trial state's numbers (checked, in cap_trial_state): ξ and F_d with a
+// z of 0 in 2-D.
 template <class Real>
 struct checked_trial {
   vector3<Real> spring;   // ξ
@@ -94,6 +96,26 @@ Real report_not_finite(const char* function, std::initializer_list<const char*> 
   return 0;
 }
 
+// The trial friction of a trial state's numbers: −k_t ξ + F_d (N
+// components, the rest 0), −k_θ φ + T_d and |F|.  The cap and
+// surely_sticks share it, so that they decide sticking on the same numbers.
+template <class Real>
+struct trial_friction {
+  vector3<Real> force;
+  Real torque;
+  Real magnitude;  // |force|
+};
+template <int N, class Real>
+BOOST_FORCEINLINE trial_friction<Real> trial_friction_of(const checked_trial<Real>& in,
+                                                         const spring_stiffness<Real>& springs) {
+  const Real kt = springs.tangential.value, kw = springs.twisting.value;
+  trial_friction<Real> out{{}, -kw * in.twist + in.damping_torque, Real(0)};
+  for (std::size_t i = 0; i < std::size_t(N); ++i)
+    out.force[i] = -kt * in.spring[i] + in.damping[i];
+  out.magnitude = vector_norm(out.force[0], out.force[1], out.force[2]);
+  return out;
+}
+
 // The cap on checked inputs (cap_trial_state, spring_history_friction):
 // the stiffnesses finite and > 0, `patch` checked, `start` a curve point
 // (ratio 0: none).  What could overflow on the way (the trial, the torque
@@ -118,10 +140,9 @@ capped_friction<Vec, typename Profile::value_type> cap_checked(
     return out;
   };
   // The trial friction, which must not overflow (|F| finite: each component is).
-  vector3<Real> force{};
-  for (std::size_t i = 0; i < std::size_t(N); ++i) force[i] = -kt * in.spring[i] + in.damping[i];
-  const Real t = -kw * in.twist + in.damping_torque;
-  const Real f = vector_norm(force[0], force[1], force[2]);
+  trial_friction<Real> trial = trial_friction_of<N>(in, springs);
+  vector3<Real>& force = trial.force;
+  const Real t = trial.torque, f = trial.magnitude;
   if (!((isfinite)(f) && (isfinite)(t)))
     return reported(report_not_finite(
         function, {"the trial force -k_t xi + damping", "the trial torque -k_w phi + damping"},
@@ -200,14 +221,13 @@ bool surely_sticks(const Profile& profile,
                 "spinslide::surely_sticks: the spring and the damping force must be 2- or "
                 "3-component vector classes (operator[] or members x, y[, z])");
   using std::fabs;
-  const detail::vector3<Real> spring = detail::read<n, Real>(trial.displacement),
-                              damping = detail::read<n, Real>(trial.damping_force);
+  const detail::checked_trial<Real> in{detail::read<n, Real>(trial.displacement),
+                                       detail::read<n, Real>(trial.damping_force), trial.twist,
+                                       trial.damping_torque};
+  const detail::trial_friction<Real> f = detail::trial_friction_of<n>(in, springs);
   const Real kt = springs.tangential.value, kw = springs.twisting.value;
   const Real a = contact.radius.value, load = contact.friction.value * contact.normal.value;
-  detail::vector3<Real> force{};
-  for (std::size_t i = 0; i < std::size_t(n); ++i) force[i] = -kt * spring[i] + damping[i];
-  const Real t = -kw * trial.twist + trial.damping_torque;
-  const Real x = detail::vector_norm(force[0], force[1], force[2]) / load, y = fabs(t) / a / load;
+  const Real x = f.magnitude / load, y = fabs(f.torque) / a / load;
   const Real weight = a * a * kt / kw;  // cap_trial_state's torque weight, > 0 and finite
   return kt > 0 && kw > 0 && a > 0 && load > 0 && weight > 0 &&
          detail::all_finite(x, y, load, weight) &&

@@ -98,6 +98,12 @@ struct symmetric3 {
   Real xx, xy, xz, yy, yz, zz;
 };
 
+// The upper triangle of a.
+template <class Real>
+symmetric3<Real> upper(const matrix3<Real>& a) {
+  return {a[0][0], a[0][1], a[0][2], a[1][1], a[1][2], a[2][2]};
+}
+
 // The upper triangle of a, plus the symmetric h.
 template <class Real>
 symmetric3<Real> upper_plus(const matrix3<Real>& a, const symmetric3<Real>& h) {
@@ -134,7 +140,7 @@ BOOST_FORCEINLINE bool solve_symmetric(const symmetric3<Real>& a, const vector3<
 // The same for a matrix3, of which the upper triangle is read.
 template <class Real>
 bool solve_symmetric(const matrix3<Real>& a, const vector3<Real>& b, vector3<Real>& x) {
-  return solve_symmetric(upper_plus(a, symmetric3<Real>{}), b, x);
+  return solve_symmetric(upper(a), b, x);
 }
 
 // A⁻¹ from its Cholesky factor, column by column.

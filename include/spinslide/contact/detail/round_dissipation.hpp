@@ -36,15 +36,13 @@ class round_dissipation {
   using Real = value_type;
   using vec = vector3<Real>;
 
-  // D's derivatives at a slip, and the profile's values they came from.
+  // D's derivatives at a slip, and the slope they came from.
   struct point {
     vec s;
     vec grad;                  // ∇D(s): the curve point
     symmetric3<Real> hessian;  // ∇²D(s)
     Real along, across;        // |s_f|, |s_t|
-    Real ratio;                // ε at which the values were taken
-    force_torque_result<Real> ft;
-    Real slope;  // 𝓕′(ε)
+    Real slope;                // 𝓕′ at s's ratio: the answer's start for the next call
   };
   // 𝓕, 𝓣 and 𝓕′ at a ratio.
   struct values {
@@ -140,8 +138,6 @@ class round_dissipation {
     const Real sign = x.s[2] < 0 ? Real(-1) : Real(1);
     const Real q = v.ft.force * to_f, alpha = v.slope * to_t;
     const Real beta = alpha * eps, gamma = beta * eps, cross = (alpha - q);
-    x.ratio = v.ratio;
-    x.ft = v.ft;
     x.slope = v.slope;
     x.grad = {v.ft.force * dx, v.ft.force * dy, sign * v.ft.torque};
     const Real bx = -beta * sign * dx, by = -beta * sign * dy;

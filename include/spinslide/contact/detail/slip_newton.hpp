@@ -25,8 +25,6 @@
 
 #include <spinslide/contact/detail/matrix3.hpp>
 
-#include <boost/math/special_functions/fpclassify.hpp>
-
 #include <cmath>
 #include <limits>
 
