@@ -237,6 +237,30 @@ TEST(ImpulseFriction, NoLoadNoFrictionAndBadInput) {
                std::domain_error);
 }
 
+// The sticking test comes before the stopping impulse's and the load's own
+// tests (impulse_friction's entry): what overflowed still fails them, and
+// is refused, rather than sticking.  A load μΛ beyond the largest value
+// would put every impulse in the triangle; a W⁻¹s that overflowed, none.
+TEST(ImpulseFriction, OverflowsAreRefusedBeforeTheySeemToStick) {
+  const uniform_disk<> disk;
+  const planar_metric<double> identity(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
+  const double big = std::numeric_limits<double>::max();
+  EXPECT_THROW(impulse_friction(disk, vec2{1e-3, 0}, 0.0, identity, contact(1, big, 4)),
+               std::domain_error);
+  EXPECT_THROW(impulse_friction(disk, vec2{1e-3, 0}, 0.0, identity, contact(big, 1e300, 1)),
+               std::domain_error);
+  const planar_metric<double> light(matrix{{{1e-150, 0, 0}, {0, 1e-150, 0}, {0, 0, 1e-150}}});
+  EXPECT_THROW(impulse_friction(disk, vec2{1e300, 0}, 0.0, light, contact(1, 1, 0.5)),
+               std::domain_error);
+  // Just below: the same contacts stick, with the stopping impulse.
+  const auto held = impulse_friction(disk, vec2{1e-3, 0}, 0.0, identity, contact(1, big / 8, 4));
+  EXPECT_TRUE(held.sticking);
+  EXPECT_EQ(held.force[0], -1e-3);
+  EXPECT_EQ(held.force[1], 0);
+  EXPECT_FALSE(std::signbit(held.force[1]));
+  EXPECT_EQ(held.torque, 0);
+}
+
 // The kinetic energy ½ sᵀW⁻¹s before and after the impulse r.
 template <class Impulse>
 std::array<double, 2> energies(const planar_metric<double>& inverse_mass,

@@ -314,6 +314,11 @@ TEST(TrialCap, SurelySticksDecidesNothingForBadArguments) {
   EXPECT_FALSE(surely_sticks(profile, good, springs(1e3, 0.05), contact(0.05, 0, 0.5)));
   EXPECT_FALSE(surely_sticks(profile, good, springs(1e3, 0.05), contact(0, 1, 0.5)));
   EXPECT_FALSE(surely_sticks(profile, good, springs(1e3, 0.05), contact(inf, 1, 0.5)));
+  // A negative normal force and friction coefficient, whose product μN is
+  // positive (it answered true until the cap's own first test shared it).
+  EXPECT_FALSE(surely_sticks(profile, good, springs(1e3, 0.05), contact(0.05, -1, -0.5)));
+  EXPECT_THROW(cap_trial_state(profile, good, springs(1e3, 0.05), contact(0.05, -1, -0.5)),
+               std::domain_error);
   const spring_stiffness<double> soft{tangential_stiffness<double>{1e3},
                                       twisting_stiffness<double>{0}};
   EXPECT_FALSE(surely_sticks(profile, good, soft, contact(0.05, 1, 0.5)));

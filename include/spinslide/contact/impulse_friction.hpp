@@ -33,11 +33,122 @@
 #include <spinslide/contact/limit_set.hpp>
 #include <spinslide/contact/planar_metric.hpp>
 
+#include <boost/config.hpp>
+#include <boost/math/tools/precision.hpp>
+
 #include <array>
 #include <cmath>
 #include <limits>
 
 namespace spinslide {
+
+namespace detail {
+
+// Every output NaN: a check reported an error through a policy that does
+// not throw.
+template <class Vec2, class Real>
+impulse_result<Vec2, Real> reported_impulse(const curve_point<Real>& start) {
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  impulse_result<Vec2, Real> out{Vec2{}, nan, false, nan, start};
+  set<0>(out.force, nan);
+  set<1>(out.force, nan);
+  return out;
+}
+
+// The result of a contact that sticks: the impulse z = 0 − W⁻¹s that
+// stops it (+0 where W⁻¹s is 0, as at rest), `out` carrying the rest.
+template <class Vec2, class Real>
+impulse_result<Vec2, Real> sticking_impulse(impulse_result<Vec2, Real> out,
+                                            const vector3<Real>& stop) {
+  out.sticking = true;
+  set<0>(out.force, Real(0 - stop[0]));
+  set<1>(out.force, Real(0 - stop[1]));
+  out.torque = 0 - stop[2];
+  return out;
+}
+
+// The impulse law's errors, where its one test of good arguments failed:
+// the checks one by one report the first bad one, through the policy; the
+// result NaN where the policy does not throw.
+template <class Profile, class Vec2>
+impulse_result<Vec2, typename Profile::value_type> impulse_argument_error(
+    const char* function, const std::array<typename Profile::value_type, 3>& slip,
+    const impulse_contact<typename Profile::value_type>& contact,
+    const curve_point<typename Profile::value_type>& start) {
+  const typename Profile::policy_type pol;
+  checked(function, "velocity[0]", slip[0], argument_rule::finite, pol);
+  checked(function, "velocity[1]", slip[1], argument_rule::finite, pol);
+  checked(function, "spin", slip[2], argument_rule::finite, pol);
+  checked_patch(function, contact, pol, argument_rule::finite_non_negative);
+  checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
+  return reported_impulse<Vec2>(start);
+}
+
+// The impulse law beyond the inner triangle (impulse_friction, which has
+// tested its arguments and the triangle): `stop` = W⁻¹s, the negated
+// impulse that stops the contact, which the triangle's test did not check
+// (a W⁻¹s, μΛ or μΛa⟨r⟩ that overflowed is an error here).  Out of line,
+// so that a caller inlines the entry and its test.
+template <class Profile, class Vec2>
+BOOST_NOINLINE impulse_result<Vec2, typename Profile::value_type> impulse_beyond_triangle(
+    const Profile& profile, const char* function, const vector3<typename Profile::value_type>& slip,
+    const vector3<typename Profile::value_type>& stop,
+    const planar_metric<typename Profile::value_type>& inverse_mass,
+    const impulse_contact<typename Profile::value_type>& contact,
+    const curve_point<typename Profile::value_type>& start) {
+  using Real = typename Profile::value_type;
+  const typename Profile::policy_type pol;
+  const Real a = contact.radius.value, load = contact.friction.value * contact.normal.value;
+  const Real top = profile.mean_radius();
+  impulse_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
+                                 start};
+  // The largest angular impulse, μΛa⟨r⟩, must be a number too (its exact
+  // product only where the plain one overflows: an intermediate may).
+  if (!all_finite(stop[0], stop[1], stop[2], load, Real(load * (a * top)))) {
+    vector3<Real> z = stop;
+    for (Real& x : z)
+      x = checked(function, "the stopping impulse -W^-1 (v, spin)", x, argument_rule::finite, pol);
+    const Real good_load =
+        checked(function, "contact.normal*contact.friction", load, argument_rule::finite, pol);
+    const Real spin_load = checked(function, "contact.normal*contact.friction*contact.radius*<r>",
+                                   product(load, a, top), argument_rule::finite, pol);
+    if (any_reported(z[0], z[1], z[2], good_load, spin_load)) return reported_impulse<Vec2>(start);
+  }
+  const Real vx = slip[0], vy = slip[1], w = slip[2];
+  if (load == 0 || (vx == 0 && vy == 0 && w == 0)) {
+    out.sticking = vx == 0 && vy == 0 && w == 0;
+    if (!out.sticking) out.ratio = slip_ratio(Real(std::hypot(vx, vy)), a, w);
+    return out;
+  }
+  const impulse_frame<Real> frame =
+      impulse_frame_for(inverse_mass, a, Real(2 / profile.mean_inverse_radius()));
+  if (frame.too_large) {
+    raise_argument_error(
+        function, "contact.radius",
+        "at most 1/(16 sqrt(kappa) epsilon) times the inverse mass's own length scale "
+        "sqrt((W_xx + W_yy)/(2 W_ww)) (kappa its condition number; 1e13 times it in double "
+        "for kappa = 1e3)",
+        a, pol);
+    return reported_impulse<Vec2>(start);
+  }
+  if (frame.point) return point_limit_result(out, inverse_mass, slip, a, load);
+  // z = −W⁻¹s in the frame's units (L = cτ), likewise.
+  const vector3<Real> target{-stop[0] / load, -stop[1] / load, -stop[2] / frame.c / load};
+  const friction_result<std::array<Real, 2>, Real> r =
+      frame.k == 1  // the profile's own curve: the one step of a coin's or a block's contact
+          ? metric_projector<Profile>(profile, target, frame.metric, frame.inverse)(start.ratio,
+                                                                                    &start)
+          : project_in_frame(profile, frame, target, start, {inverse_mass, slip, load});
+  if (r.sticking) return sticking_impulse(out, stop);
+  out.ratio = r.ratio;
+  out.point = r.curve();
+  set<0>(out.force, Real(load * r.force[0]));
+  set<1>(out.force, Real(load * r.force[1]));
+  out.torque = product(load, a, r.torque);
+  return out;
+}
+
+}  // namespace detail
 
 /// The friction impulse for one contact over one step (see the file's
 /// comment).  `velocity`: the relative sliding velocity before friction (a
@@ -70,97 +181,34 @@ impulse_result<Vec2, typename Profile::value_type> impulse_friction(
                 "such as MuJoCo's mjtNum* into a std::array<double, 2>");
   static const char* function =
       "spinslide::impulse_friction<%1%>(profile, velocity, %1%, inverse_mass, contact)";
-  using detail::argument_rule;
-  using detail::checked;
-  const typename Profile::policy_type pol;
-  const Real vx = static_cast<Real>(detail::get<0>(velocity)),
-             vy = static_cast<Real>(detail::get<1>(velocity)), w = spin;
+  const detail::vector3<Real> slip{static_cast<Real>(detail::get<0>(velocity)),
+                                   static_cast<Real>(detail::get<1>(velocity)), spin};
   const Real a = contact.radius.value, n = contact.normal.value, mu = contact.friction.value;
-  const Real s0 = start.ratio;
-  impulse_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
-                                 start};
-  // Every output NaN where a check reported an error through a policy that
-  // does not throw.
-  auto reported = [&out](Real bad) {
-    detail::set<0>(out.force, bad);
-    detail::set<1>(out.force, bad);
-    out.torque = out.ratio = bad;
-    return out;
-  };
-  // One test for good arguments; where it fails, the checks one by one
-  // report the first bad one.
-  if (!(detail::all_finite(vx, vy, w, a, n, mu) && a >= 0 && n >= 0 && mu >= 0 && s0 >= 0)) {
-    checked(function, "velocity[0]", vx, argument_rule::finite, pol);
-    checked(function, "velocity[1]", vy, argument_rule::finite, pol);
-    checked(function, "spin", w, argument_rule::finite, pol);
-    detail::checked_patch(function, contact, pol, argument_rule::finite_non_negative);
-    checked(function, "start.ratio", s0, argument_rule::non_negative, pol);
-    return reported(out.ratio);
-  }
+  // One test for good arguments; where it fails, the checks one by one.
+  if (!(detail::all_finite(slip[0], slip[1], slip[2], a, n, mu) && a >= 0 && n >= 0 && mu >= 0 &&
+        start.ratio >= 0))
+    return detail::impulse_argument_error<Profile, Vec2>(function, slip, contact, start);
   // The impulse that stops the contact, z = −W⁻¹s, and the set μΛ·S·L₃ with
   // S = diag(1, 1, a): in the limit set's units ẑ = S⁻¹z/(μΛ), in the metric
   // SWS (inverse S⁻¹W⁻¹S⁻¹), both positive definite since W is.
-  const detail::vector3<Real> slip{vx, vy, w};
-  detail::vector3<Real> stop = detail::multiply(inverse_mass.inverse(), slip);
-  for (Real& x : stop) x = -x;
-  const Real load = mu * n;
-  // The largest angular impulse, μΛa⟨r⟩, must be a number too (its exact
-  // product only where the plain one overflows: an intermediate may).
-  const Real top = profile.mean_radius();
-  if (!detail::all_finite(stop[0], stop[1], stop[2], load, Real(load * (a * top)))) {
-    for (Real& x : stop)
-      x = checked(function, "the stopping impulse -W^-1 (v, spin)", x, argument_rule::finite, pol);
-    const Real good_load =
-        checked(function, "contact.normal*contact.friction", load, argument_rule::finite, pol);
-    const Real spin_load = checked(function, "contact.normal*contact.friction*contact.radius*<r>",
-                                   detail::product(load, a, top), argument_rule::finite, pol);
-    if (detail::any_reported(stop[0], stop[1], stop[2], good_load, spin_load))
-      return reported(good_load + stop[0] + stop[1] + stop[2] + spin_load);
-  }
-  if (load == 0 || (vx == 0 && vy == 0 && w == 0)) {
-    out.sticking = vx == 0 && vy == 0 && w == 0;
-    if (!out.sticking) out.ratio = detail::slip_ratio(Real(std::hypot(vx, vy)), a, w);
-    return out;
-  }
-  auto stuck = [&out, &stop]() {
-    out.sticking = true;
-    detail::set<0>(out.force, stop[0]);
-    detail::set<1>(out.force, stop[1]);
-    out.torque = stop[2];
-    return out;
-  };
+  const detail::vector3<Real> stop = detail::multiply(inverse_mass.inverse(), slip);  // −z
   // Sticking is decided on z's magnitudes (L₃ = {(|f|, |t|) ∈ L}) where
   // they lie in L's inner triangle, in the limit set's units (divided by a,
   // then by the load: μΛa itself may be subnormal), before any evaluation
-  // or metric.
+  // or metric, and before z's own tests: a z that overflowed, and a load of
+  // 0 or beyond the largest value (with a > 0, μΛa⟨r⟩ is then too), fail
+  // the triangle's comparisons, and the rest tests them.
   using std::fabs;
-  if (a > 0 && detail::in_sticking_triangle(Real(stop[0] / load), Real(stop[1] / load),
-                                            Real(fabs(stop[2]) / a / load), top))
-    return stuck();
-  const detail::impulse_frame<Real> frame =
-      detail::impulse_frame_for(inverse_mass, a, Real(2 / profile.mean_inverse_radius()));
-  if (frame.too_large)
-    return reported(detail::raise_argument_error(
-        function, "contact.radius",
-        "at most 1/(16 sqrt(kappa) epsilon) times the inverse mass's own length scale "
-        "sqrt((W_xx + W_yy)/(2 W_ww)) (kappa its condition number; 1e13 times it in double "
-        "for kappa = 1e3)",
-        a, pol));
-  if (frame.point) return detail::point_limit_result(out, inverse_mass, slip, a, load);
-  // In the frame's units (L = cτ), likewise.
-  const detail::vector3<Real> target{stop[0] / load, stop[1] / load, stop[2] / frame.c / load};
-  const friction_result<std::array<Real, 2>, Real> r =
-      frame.k == 1  // the profile's own curve: the one step of a coin's or a block's contact
-          ? detail::metric_projector<Profile>(profile, target, frame.metric, frame.inverse)(s0,
-                                                                                            &start)
-          : detail::project_in_frame(profile, frame, target, start, {inverse_mass, slip, load});
-  if (r.sticking) return stuck();
-  out.ratio = r.ratio;
-  out.point = r.curve();
-  detail::set<0>(out.force, Real(load * r.force[0]));
-  detail::set<1>(out.force, Real(load * r.force[1]));
-  out.torque = detail::product(load, a, r.torque);
-  return out;
+  const Real load = mu * n, top = profile.mean_radius();
+  if (a > 0 && Real(load * (a * top)) <= boost::math::tools::max_value<Real>() &&
+      detail::in_sticking_triangle(Real(stop[0] / load), Real(stop[1] / load),
+                                   Real(fabs(stop[2]) / a / load), top)) {
+    impulse_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),
+                                   start};
+    return detail::sticking_impulse(out, stop);
+  }
+  return detail::impulse_beyond_triangle<Profile, Vec2>(profile, function, slip, stop, inverse_mass,
+                                                        contact, start);
 }
 
 }  // namespace spinslide

@@ -115,10 +115,10 @@ friction_result<Vec2, typename Profile::value_type> spring_history_friction(
   };
   if (detail::any_reported(x, y, phi, kt, kw, patch.radius, patch.normal, patch.friction, start))
     return reported(out.ratio);
+  const detail::checked_trial<Real> trial{{x, y, Real(0)}, {}, phi, Real(0)};
+  const spring_stiffness<Real> k{tangential_stiffness<Real>{kt}, twisting_stiffness<Real>{kw}};
   const capped_friction<Vec2, Real> cap = detail::cap_checked<2, Vec2>(
-      profile, detail::checked_trial<Real>{{x, y, Real(0)}, {}, phi, Real(0)},
-      spring_stiffness<Real>{tangential_stiffness<Real>{kt}, twisting_stiffness<Real>{kw}}, patch,
-      history.curve, function);
+      profile, trial, detail::trial_friction_of<2>(trial, k), k, patch, history.curve, function);
   if ((boost::math::isnan)(cap.twist)) return reported(cap.twist);
   out = {cap.force, cap.torque, cap.sticking, cap.ratio, cap.point};
   history.displacement = cap.displacement;

@@ -78,10 +78,6 @@ struct checked_trial {
   Real damping_torque;    // T_d
 };
 
-// The cap on checked inputs (cap_trial_state, spring_history_friction):
-// the stiffnesses finite and > 0, `patch` checked, `start` a curve point
-// (ratio 0: none).  What could overflow on the way (the trial, the
-// rewritten springs) is checked here.  `Vec` has N = 2 or 3 components.
 // The first non-finite of `values`, reported through the policy under its
 // name (by default a domain error; else NaN); 0 if all are finite.  The
 // laws test finiteness in one expression and call this only when it fails.
@@ -116,14 +112,34 @@ BOOST_FORCEINLINE trial_friction<Real> trial_friction_of(const checked_trial<Rea
   return out;
 }
 
-// The cap on checked inputs (cap_trial_state, spring_history_friction):
-// the stiffnesses finite and > 0, `patch` checked, `start` a curve point
-// (ratio 0: none).  What could overflow on the way (the trial, the torque
-// weight, the rewritten springs) is checked here.  `Vec` has N = 2 or 3
-// components.
+// Whether the trial friction `f` lies in the inner triangle |F|/(μN) +
+// |T|/(μNa⟨r⟩) ≤ 1 (`top` = ⟨r⟩), by the cap's own arithmetic (cap_checked,
+// limit_projector): false, deciding nothing, for any springs or contact
+// that cap_trial_state refuses, and for a trial that is not finite (its
+// magnitudes then are not, or NaN: the comparisons fail).
+template <class Real>
+BOOST_FORCEINLINE bool trial_in_triangle(const trial_friction<Real>& f,
+                                         const spring_stiffness<Real>& springs,
+                                         const force_contact<Real>& contact, Real top) {
+  using std::fabs;
+  const Real kt = springs.tangential.value, kw = springs.twisting.value;
+  const Real a = contact.radius.value, normal = contact.normal.value;
+  const Real load = contact.friction.value * normal;
+  const Real x = f.magnitude / load, y = fabs(f.torque) / a / load;
+  const Real weight = a * a * kt / kw;  // cap_trial_state's torque weight, > 0 and finite
+  return kt > 0 && kw > 0 && a > 0 && normal >= 0 && load > 0 && weight > 0 &&
+         all_finite(x, y, load, weight) && in_sticking_triangle(x, y, top);
+}
+
+// The cap on checked inputs (cap_trial_state, spring_history_friction),
+// their trial friction `friction` given (trial_friction_of): the
+// stiffnesses finite and > 0, `patch` checked, `start` a curve point (ratio
+// 0: none).  What could overflow on the way (the trial, the torque weight,
+// the rewritten springs) is checked here.  `Vec` has N = 2 or 3 components.
 template <int N, class Vec, class Profile>
 capped_friction<Vec, typename Profile::value_type> cap_checked(
     const Profile& profile, const checked_trial<typename Profile::value_type>& in,
+    const trial_friction<typename Profile::value_type>& friction,
     const spring_stiffness<typename Profile::value_type>& springs,
     const patch_values<typename Profile::value_type>& patch,
     const curve_point<typename Profile::value_type>& start, const char* function) {
@@ -139,8 +155,9 @@ capped_friction<Vec, typename Profile::value_type> cap_checked(
     out.torque = out.twist = out.ratio = bad;
     return out;
   };
-  // The trial friction, which must not overflow (|F| finite: each component is).
-  trial_friction<Real> trial = trial_friction_of<N>(in, springs);
+  // The trial friction (trial_friction_of(in, springs), the caller's), which
+  // must not overflow (|F| finite: each component is).
+  trial_friction<Real> trial = friction;
   vector3<Real>& force = trial.force;
   const Real t = trial.torque, f = trial.magnitude;
   if (!((isfinite)(f) && (isfinite)(t)))
@@ -220,18 +237,11 @@ bool surely_sticks(const Profile& profile,
   static_assert(detail::is_vector<Vec, 2>() && (n == 2 || n == 3),
                 "spinslide::surely_sticks: the spring and the damping force must be 2- or "
                 "3-component vector classes (operator[] or members x, y[, z])");
-  using std::fabs;
   const detail::checked_trial<Real> in{detail::read<n, Real>(trial.displacement),
                                        detail::read<n, Real>(trial.damping_force), trial.twist,
                                        trial.damping_torque};
-  const detail::trial_friction<Real> f = detail::trial_friction_of<n>(in, springs);
-  const Real kt = springs.tangential.value, kw = springs.twisting.value;
-  const Real a = contact.radius.value, load = contact.friction.value * contact.normal.value;
-  const Real x = f.magnitude / load, y = fabs(f.torque) / a / load;
-  const Real weight = a * a * kt / kw;  // cap_trial_state's torque weight, > 0 and finite
-  return kt > 0 && kw > 0 && a > 0 && load > 0 && weight > 0 &&
-         detail::all_finite(x, y, load, weight) &&
-         detail::in_sticking_triangle(x, y, profile.mean_radius());
+  return detail::trial_in_triangle(detail::trial_friction_of<n>(in, springs), springs, contact,
+                                   profile.mean_radius());
 }
 
 /// The trial state `trial` of a DEM contact capped on `profile`'s limit set
@@ -263,6 +273,17 @@ capped_friction<Vec, typename Profile::value_type> cap_trial_state(
   detail::checked_trial<Real> in{detail::read<n, Real>(trial.displacement),
                                  detail::read<n, Real>(trial.damping_force), trial.twist,
                                  trial.damping_torque};
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  // First the trial in the inner triangle, as surely_sticks decides it (on
+  // good arguments only; a bad one fails it): the trial is kept.
+  const detail::trial_friction<Real> friction = detail::trial_friction_of<n>(in, springs);
+  if (start.ratio >= 0 &&
+      detail::trial_in_triangle(friction, springs, contact, profile.mean_radius())) {
+    capped_friction<Vec, Real> out{{Vec{}, friction.torque, true, nan, start}, Vec{}, in.twist};
+    detail::write<n>(out.force, friction.force);
+    detail::write<n>(out.displacement, in.spring);
+    return out;
+  }
   const Real kt = springs.tangential.value, kw = springs.twisting.value;
   const Real a = contact.radius.value, normal = contact.normal.value;
   const Real mu = contact.friction.value;
@@ -281,7 +302,6 @@ capped_friction<Vec, typename Profile::value_type> cap_trial_state(
     checked(function, "springs.twisting", kw, argument_rule::finite_positive, pol);
     detail::checked_patch(function, contact, pol);
     checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
-    const Real nan = std::numeric_limits<Real>::quiet_NaN();
     capped_friction<Vec, Real> out{{Vec{}, nan, false, nan, start}, Vec{}, nan};
     for (Vec* v : {&out.force, &out.displacement})
       detail::write<n>(*v, detail::vector3<Real>{nan, nan, nan});
@@ -289,7 +309,7 @@ capped_friction<Vec, typename Profile::value_type> cap_trial_state(
   }
   const spring_stiffness<Real> k{tangential_stiffness<Real>{kt}, twisting_stiffness<Real>{kw}};
   const detail::patch_values<Real> patch{a, normal, mu};
-  return detail::cap_checked<n, Vec>(profile, in, k, patch, start, function);
+  return detail::cap_checked<n, Vec>(profile, in, friction, k, patch, start, function);
 }
 
 }  // namespace spinslide

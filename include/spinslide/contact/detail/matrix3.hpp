@@ -25,8 +25,11 @@ namespace detail {
 template <class Real>
 using matrix3 = std::array<std::array<Real, 3>, 3>;
 
+// The products below are always inlined: g++ otherwise outlines them in
+// the projections' Newton steps once they have callers elsewhere too (31
+// instructions a call more, tools/path_instructions.py).
 template <class Real>
-vector3<Real> multiply(const matrix3<Real>& a, const vector3<Real>& x) {
+BOOST_FORCEINLINE vector3<Real> multiply(const matrix3<Real>& a, const vector3<Real>& x) {
   vector3<Real> y{};
   for (std::size_t i = 0; i < 3; ++i) y[i] = a[i][0] * x[0] + a[i][1] * x[1] + a[i][2] * x[2];
   return y;
@@ -112,7 +115,7 @@ symmetric3<Real> upper_plus(const matrix3<Real>& a, const symmetric3<Real>& h) {
 }
 
 template <class Real>
-vector3<Real> multiply(const symmetric3<Real>& a, const vector3<Real>& x) {
+BOOST_FORCEINLINE vector3<Real> multiply(const symmetric3<Real>& a, const vector3<Real>& x) {
   return {a.xx * x[0] + a.xy * x[1] + a.xz * x[2], a.xy * x[0] + a.yy * x[1] + a.yz * x[2],
           a.xz * x[0] + a.yz * x[1] + a.zz * x[2]};
 }
