@@ -61,16 +61,19 @@ friction_result<Real, Real> project_checked(const Profile& profile,
                                             Real torque_weight, Real start, const char* function,
                                             const curve_point<Real>* from = nullptr) {
   require_projectable<Profile, Real>();
-  using Policy = typename Profile::policy_type;
-  const Policy pol;
-  const Real f = checked(function, "force", point.force, argument_rule::finite_non_negative, pol);
-  const Real t = checked(function, "torque", point.torque, argument_rule::finite_non_negative, pol);
-  const Real w =
-      checked(function, "torque_weight", torque_weight, argument_rule::finite_positive, pol);
-  const Real s = checked(function, "start.ratio", start, argument_rule::non_negative, pol);
-  if (any_reported(f, t, w, s)) {
+  const Real f = point.force, t = point.torque, w = torque_weight, s = start;
+  // One test for good arguments; where it fails, the checks one by one
+  // report the first bad one.
+  if (!(all_finite(f, t, w) && f >= 0 && t >= 0 && w > 0 && s >= 0)) {
+    using Policy = typename Profile::policy_type;
+    const Policy pol;
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
-    return {nan, nan, false, nan};
+    // In this order (an argument list's is unspecified).
+    const Real cf = checked(function, "force", f, argument_rule::finite_non_negative, pol);
+    const Real ct = checked(function, "torque", t, argument_rule::finite_non_negative, pol);
+    const Real cw = checked(function, "torque_weight", w, argument_rule::finite_positive, pol);
+    const Real cs = checked(function, "start.ratio", s, argument_rule::non_negative, pol);
+    if (any_reported(cf, ct, cw, cs)) return {nan, nan, false, nan};
   }
   friction_result<Real, Real> r = limit_projector<Profile>(profile, {f, t}, w)(s, from);
   if (r.sticking) r.point = given_start(s, from);
