@@ -10,6 +10,7 @@
 #define SPINSLIDE_VALUES_DETAIL_DISK_FAST_HPP
 
 #include <spinslide/values/detail/branch_free_log.hpp>
+#include <spinslide/values/detail/disk_fast_avx2.hpp>
 #include <spinslide/values/detail/disk_tables.hpp>
 #include <spinslide/values/detail/horner.hpp>
 
@@ -215,9 +216,15 @@ inline void disk_fast_vector(Real eps_in, Real& force, Real& torque) {
 
 // disk_fast_vector over an array (ε[i] ≥ 0 checked by the caller), through
 // blocks of local arrays: the outputs may be null or alias the input, and
-// with that possibility the compiler would not vectorize the loop.
+// with that possibility the compiler would not vectorize the loop.  With
+// AVX2 and FMA but not AVX-512 the same form written with intrinsics
+// (disk_fast_avx2.hpp): there g++ vectorizes this loop only with every
+// select made a bitwise blend, which is no faster than the scalar loop.
 template <class Real>
 inline void disk_fast_batch(const Real* eps, std::size_t count, Real* force, Real* torque) {
+#if defined(__AVX2__) && defined(__FMA__) && !defined(__AVX512F__)
+  disk_fast_batch_avx2(eps, count, force, torque);
+#else
   constexpr std::size_t block = 256;
   Real e[block], f[block], t[block];
   for (std::size_t start = 0; start < count; start += block) {
@@ -227,6 +234,7 @@ inline void disk_fast_batch(const Real* eps, std::size_t count, Real* force, Rea
     if (force) std::copy(f, f + n, force + start);
     if (torque) std::copy(t, t + n, torque + start);
   }
+#endif
 }
 
 }  // namespace detail
