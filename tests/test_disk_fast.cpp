@@ -132,6 +132,26 @@ void check_vector_form_exact() {
     EXPECT_EQ(t, c[2]) << c[0];
   }
 }
+// The same anchors through force_torque_batch, in a group of the batch's
+// width with a tail (five ratios), on the form this target selects.
+template <class Real>
+void check_batch_exact() {
+  const long double pi = boost::math::constants::pi<long double>();
+  const Real inf = std::numeric_limits<Real>::infinity();
+  const std::vector<Real> e = {Real(0), Real(1), inf, Real(-0.0), Real(1)};
+  const std::vector<Real> force = {Real(0), static_cast<Real>(8 / (3 * pi)), Real(1), Real(0),
+                                   static_cast<Real>(8 / (3 * pi))};
+  const std::vector<Real> torque = {static_cast<Real>(2.0L / 3), static_cast<Real>(8 / (9 * pi)),
+                                    Real(0), static_cast<Real>(2.0L / 3),
+                                    static_cast<Real>(8 / (9 * pi))};
+  std::vector<Real> f(e.size()), t(e.size());
+  spinslide::force_torque_batch(e.data(), e.size(), f.data(), t.data());
+  EXPECT_EQ(f, force);
+  EXPECT_EQ(t, torque);
+}
+TEST(DiskFast, BatchExactValuesDouble) { check_batch_exact<double>(); }
+TEST(DiskFast, BatchExactValuesFloat) { check_batch_exact<float>(); }
+
 TEST(DiskFast, VectorFormExactValuesDouble) { check_vector_form_exact<double>(); }
 TEST(DiskFast, VectorFormExactValuesFloat) { check_vector_form_exact<float>(); }
 
@@ -261,5 +281,28 @@ void check_batch_in_place() {
 }
 TEST(DiskFast, BatchInPlaceDouble) { check_batch_in_place<double>(); }
 TEST(DiskFast, BatchInPlaceFloat) { check_batch_in_place<float>(); }
+
+// force_torque_batch itself on the dense ratios, with the budgets of the
+// scalar path: whichever form this target's flags select (the scalar loop,
+// the compiler's vectorization on AVX-512, the AVX2 intrinsics; CMake also
+// builds this file as test_disk_fast_avx2 with -mavx2 -mfma -mno-avx512f).
+template <class Real>
+void check_batch_dense(double budget) {
+  const auto e = dense_ratios<Real>();
+  std::vector<Real> f(e.size()), t(e.size());
+  spinslide::force_torque_batch(e.data(), e.size(), f.data(), t.data());
+  worst wf, wt;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    const auto exact = spinslide::force_torque(static_cast<long double>(e[i]));
+    wf.add(ulps(f[i], exact.force), static_cast<double>(e[i]));
+    wt.add(ulps(t[i], exact.torque), static_cast<double>(e[i]));
+  }
+  EXPECT_LE(wf.error, budget) << "force: worst at eps = " << wf.at;
+  EXPECT_LE(wt.error, budget) << "torque: worst at eps = " << wt.at;
+  std::printf("batch, %zu ratios: force %.3Lf ulp (eps = %.17g), torque %.3Lf ulp (eps = %.17g)\n",
+              e.size(), wf.error, wf.at, wt.error, wt.at);
+}
+TEST(DiskFast, BatchDoubleWithinFourUlpOnAMillionRatios) { check_batch_dense<double>(4); }
+TEST(DiskFast, BatchFloatWithinTwoUlpOnAMillionRatios) { check_batch_dense<float>(2); }
 
 }  // namespace
