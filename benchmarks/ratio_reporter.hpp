@@ -3,7 +3,9 @@
 //
 // A Google Benchmark console reporter that also prints, at the end, every
 // benchmark's time per item as a ratio to one baseline benchmark measured in
-// the same run.  Use from a benchmark program's main():
+// the same run.  With --benchmark_repetitions=N each time is the median of
+// the N repetitions (on a shared machine a single run can be off by 20 %).
+// Use from a benchmark program's main():
 //   spinslide_bench::ratio_reporter reporter("baseline_name");
 //   benchmark::RunSpecifiedBenchmarks(&reporter);
 #ifndef SPINSLIDE_BENCHMARKS_RATIO_REPORTER_HPP
@@ -11,6 +13,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -35,12 +39,18 @@ class ratio_reporter : public benchmark::ConsoleReporter {
       if (r.run_type != Run::RT_Iteration || r.error_occurred) continue;
       const auto items = r.counters.find("items_per_second");
       if (items == r.counters.end() || items->second.value <= 0) continue;
-      results_.emplace_back(r.benchmark_name(), 1e9 / items->second.value);
+      const std::string name = r.benchmark_name();
+      auto same = std::find_if(times_.begin(), times_.end(),
+                               [&](const auto& t) { return t.first == name; });
+      if (same == times_.end()) same = times_.insert(times_.end(), {name, {}});
+      same->second.push_back(1e9 / items->second.value);
     }
   }
 
   void Finalize() override {
     ConsoleReporter::Finalize();
+    results_.clear();
+    for (const auto& t : times_) results_.emplace_back(t.first, median(t.second));
     double base = 0;
     for (const auto& r : results_)
       if (r.first == baseline_) base = r.second;
@@ -64,8 +74,15 @@ class ratio_reporter : public benchmark::ConsoleReporter {
   }
 
  private:
+  static double median(std::vector<double> x) {
+    std::sort(x.begin(), x.end());
+    const std::size_t n = x.size();
+    return n % 2 ? x[n / 2] : (x[n / 2 - 1] + x[n / 2]) / 2;
+  }
+
   std::string baseline_;
   std::vector<std::pair<std::string, std::string>> comparisons_;
+  std::vector<std::pair<std::string, std::vector<double>>> times_;  // per repetition
   std::vector<std::pair<std::string, double>> results_;
 };
 
