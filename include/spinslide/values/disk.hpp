@@ -426,8 +426,8 @@ force_torque_result<typename boost::math::tools::promote_args<T>::type> force_to
 /// the first bad ratio throws and earlier outputs are already written.
 /// For float and double on targets with AVX-512 (e.g. -march=native on a
 /// machine that has it), or with AVX2 and FMA (-mavx2 -mfma), a vectorized
-/// form of the same accuracy (≤ 4 ulp, about 2× faster than the scalar
-/// path on AVX-512, 1.3× on AVX2); elsewhere a loop of force_torque() calls
+/// form of the same accuracy (≤ 4 ulp; about 2× faster than the loop on
+/// AVX-512, 1.6× on AVX2); elsewhere a loop of force_torque() calls
 /// (docs/performance.md).
 template <class Real, class Policy>
 void force_torque_batch(const Real* eps, std::size_t count,
