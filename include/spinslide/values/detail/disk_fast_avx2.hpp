@@ -88,8 +88,10 @@ inline __m256d disk_avx2_log(__m256d y) {
   return _mm256_fmadd_pd(exponent, ln2_hi, series);
 }
 
-// disk_reduce (disk_fast.hpp): y = 1 − k², k = 1/ε above 1, else 1, four at
-// a time; ε is capped at 2^64 for the products, as there.
+// disk_reduce (disk_fast.hpp), four at a time: y = 1 − min(ε, 1/ε)² as the
+// product that stays accurate near ε = 1, and k = 1/ε above 1, else 1; the
+// divisor is selected first and ε capped at 2^64, so nothing divides by 0
+// or multiplies ∞, as there.
 inline __m256d disk_avx2_reduce(__m256d eps, __m256d above, __m256d& k) {
   const __m256d one = disk_avx2_constant(1.0), cap = disk_avx2_constant(18446744073709551616.0);
   k = _mm256_div_pd(one, disk_avx2_select(one, eps, above));
