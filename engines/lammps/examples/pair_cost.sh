@@ -9,7 +9,10 @@
 #                        rolling resistance on, 10 000 steps, then 4000 timed)
 # for the models stock, uncoupled (coupling no) and coupled (coupling yes),
 # each run RUNS times (default 3), interleaved; prints every time, then per
-# case and model the medians and their ratios to stock's medians.
+# case and model the medians and their ratios to stock's medians.  The
+# times are CPU seconds: each section's wall time times its %CPU (the runs
+# take -var timer full), which leaves out the time a run waited for a core
+# on a shared machine; the per-run lines give the wall times too.
 #
 # Then one more run of uncoupled and of coupled per case, untimed, counts
 # the plugin's contacts between spheres (-var stats yes: compute pair
@@ -66,12 +69,13 @@ run() {
   local c=$1 m=$2 out=$3 log=$3.log
   shift 3
   (cd "$work" && "$lmp" -in "$(input_of "$c")" -var model "$m" -var plugin "$plugin" \
-     -var out "$out" "${extra[@]}" "$@" -screen none -log "$log" > /dev/null) ||
+     -var out "$out" -var timer full "${extra[@]}" "$@" -screen none -log "$log" > /dev/null) ||
     { echo "$0: LAMMPS failed on $c, $m (log: $log)" >&2; trap - EXIT; exit 1; }
 }
 
-# The last row NAME of a log's timing breakdown: its average over the ranks.
-row_time() { grep -E "^$2 +\|" "$1" | tail -n 1 | awk -F'|' '{gsub(/ /, "", $3); print $3}'; }
+# The last row NAME of a log's timing breakdown (timer full): its average
+# wall time over the ranks, then that times its %CPU.
+row_time() { grep -E "^$2 +\|" "$1" | tail -n 1 | awk -F'|' '{print $3 + 0, $3 * $6 / 100}'; }
 # The steps of a log's last run (the timed one).
 timed_steps() { sed -n 's/^Loop time of .* for \([0-9]*\) steps .*/\1/p' "$1" | tail -n 1; }
 
@@ -81,8 +85,9 @@ for c in "${cases[@]}"; do
     for m in "${models[@]}"; do
       log=$work/$c.$m.$r.log
       run "$c" "$m" "$work/$c.$m.$r"
-      p=$(row_time "$log" Pair) f=$(row_time "$log" Modify)
-      echo "$c $m run $r: Pair $p s, Modify $f s"
+      read -r pw p < <(row_time "$log" Pair)
+      read -r fw f < <(row_time "$log" Modify)
+      echo "$c $m run $r: Pair $p s (wall $pw s), Modify $f s (wall $fw s)"
       pair[$c.$m]="${pair[$c.$m]:-} $p"
       modify[$c.$m]="${modify[$c.$m]:-} $f"
       steps[$c]=$(timed_steps "$log")
@@ -93,6 +98,7 @@ done
 median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {print (b > 0) ? a / b : 0}'; }
 echo
+echo "medians, CPU seconds"
 printf '%-5s %-10s %10s %8s %11s %8s\n' case model "Pair [s]" "/ stock" "Modify [s]" "/ stock"
 declare -A pair_median
 for c in "${cases[@]}"; do
