@@ -16,8 +16,10 @@
 #include <spinslide/contact/impulse_friction.hpp>
 #include <spinslide/contact/joint_pairs.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -35,10 +37,29 @@ pair_friction<double> disk_pair(double a, double mu) {
   return pair_friction(uniform_disk<>(), patch_radius<double>{a}, friction_coefficient<double>{mu});
 }
 
+// The sweeps' distribution over random cases: median, 99th percentile, worst.
+struct sweep_counts {
+  int median, p99, worst;
+};
+
+sweep_counts distribution(std::vector<int> sweeps) {
+  std::sort(sweeps.begin(), sweeps.end());
+  const auto at = [&](double q) {
+    return sweeps[static_cast<std::size_t>(q * static_cast<double>(sweeps.size() - 1))];
+  };
+  return {at(0.5), at(0.99), sweeps.back()};
+}
+
+// issue 41 - Gauss–Seidel's slowest case, two pairs rigidly coupled
+// (docs/engines.md), solved within 50 sweeps at the 99th percentile and 500
+// at worst, all converged; plain Gauss–Seidel (measured alongside, printed)
+// needs a median of 27, 3 623 at the 99th percentile and leaves 3 of the
+// 400 unconverged after 5 000.
 TEST(JointPairs, TwoPairsAtOnePointAreOnePairWithBothLoads) {
   std::mt19937_64 rng(2701);
   std::uniform_real_distribution<double> u(-1, 1);
   int sticks = 0, slips = 0, converged = 0;
+  std::vector<int> sweeps, plain_sweeps;
   for (int n = 0; n < 400; ++n) {
     const matrix a = spinslide_test::random_spd(rng, 0.05, 0);
     pair_coupling w(2);
@@ -50,9 +71,14 @@ TEST(JointPairs, TwoPairsAtOnePointAreOnePairWithBothLoads) {
     const double l1 = std::exp(u(rng)), l2 = std::exp(u(rng));
     std::vector<joint_pair> pairs{{std::ref(first), s, normal_impulse<double>{l1}, 0},
                                   {std::ref(second), s, normal_impulse<double>{l2}, 0}};
-    // Gauss–Seidel's slowest case: two pairs rigidly coupled (docs/engines.md).
+    pair_friction<double> first_plain = first, second_plain = second;  // the same curve points
+    std::vector<joint_pair> plain = pairs;
+    plain[0].friction = std::ref(first_plain);
+    plain[1].friction = std::ref(second_plain);
     const auto outcome = solve_jointly(pairs, w, {1e-10, 5000});
     converged += outcome.converged;
+    sweeps.push_back(outcome.sweeps);
+    plain_sweeps.push_back(solve_jointly(plain, w, {1e-10, 5000, false}).sweeps);
     const auto one = impulse_friction(
         uniform_disk<>(), std::array<double, 2>{s[0], s[1]}, s[2], planar_metric<double>(a),
         impulse_contact<double>{patch_radius<double>{0.1}, normal_impulse<double>{l1 + l2},
@@ -60,7 +86,7 @@ TEST(JointPairs, TwoPairsAtOnePointAreOnePairWithBothLoads) {
     const vec3 total{pairs[0].impulse[0] + pairs[1].impulse[0],
                      pairs[0].impulse[1] + pairs[1].impulse[1],
                      pairs[0].impulse[2] + pairs[1].impulse[2]};
-    const double scale = 0.4 * (l1 + l2), off = outcome.converged ? 1e-7 : 1e-4;
+    const double scale = 0.4 * (l1 + l2), off = 1e-7;
     EXPECT_NEAR(total[0], one.force[0], off * scale) << n;
     EXPECT_NEAR(total[1], one.force[1], off * scale) << n;
     EXPECT_NEAR(total[2], one.torque, off * scale) << n;
@@ -68,7 +94,14 @@ TEST(JointPairs, TwoPairsAtOnePointAreOnePairWithBothLoads) {
   }
   EXPECT_GE(sticks, 50);
   EXPECT_GE(slips, 50);
-  EXPECT_GE(converged, 390);  // measured: 397 of 400 within 5000 sweeps
+  EXPECT_EQ(converged, 400);
+  const sweep_counts counts = distribution(sweeps), before = distribution(plain_sweeps);
+  std::printf(
+      "sweeps over 400 rigidly coupled cases: median %d, 99th percentile %d, worst %d "
+      "(plain Gauss-Seidel: %d, %d, %d)\n",
+      counts.median, counts.p99, counts.worst, before.median, before.p99, before.worst);
+  EXPECT_LE(counts.p99, 50);
+  EXPECT_LE(counts.worst, 500);
 }
 
 TEST(JointPairs, PairsThatShareNoBodyAreEachTheirOwnLaw) {
@@ -165,6 +198,65 @@ TEST(JointPairs, NoFeasibleNeighbourLeavesLessEnergy) {
       for (std::size_t c = 0; c < 3; ++c) other[k][c] = (1 - mix) * best[k][c] + mix * f[c];
       EXPECT_GE(energy(w, other, s), e - 1e-12 * (1 + std::fabs(e))) << n << ", " << trial;
     }
+  }
+}
+
+// A pair's impulse p is a point of its limit set: its projection onto the
+// set in the pair's metric (the law asked for the slip −Wᵢᵢ·p) is p.
+bool feasible_impulse(const matrix& w, const vec3& p, double load) {
+  const auto own = conditioned_metric(w);
+  const vec3 back = detail::multiply(own.entries(), p);
+  pair_friction<double> fresh = disk_pair(0.3, 0.5);
+  const auto r =
+      fresh.impulse({-back[0], -back[1]}, -back[2], own, normal_impulse<double>{load}, 0);
+  return std::fabs(r.force[0] - p[0]) <= 1e-12 && std::fabs(r.force[1] - p[1]) <= 1e-12 &&
+         std::fabs(r.torque - p[2]) <= 1e-12;
+}
+
+// The k-th sweep's impulses, k = 1 … 25 (solve with max_sweeps = k), from
+// fresh pairs (a kept curve point would start the law elsewhere): each a
+// point of its own set, and none with more energy than the one before.
+void expect_every_sweep_feasible_and_lower(const pair_coupling& w, const std::vector<vec3>& s,
+                                           const std::vector<double>& loads, int n) {
+  double last = 0;  // the energy at P = 0
+  for (int k = 1; k <= 25; ++k) {
+    std::vector<pair_friction<double>> settings(s.size(), disk_pair(0.3, 0.5));
+    std::vector<joint_pair> pairs;
+    for (std::size_t p = 0; p < s.size(); ++p)
+      pairs.push_back({std::ref(settings[p]), s[p], normal_impulse<double>{loads[p]}, 0});
+    solve_jointly(pairs, w, {1e-12, k});
+    std::vector<vec3> got;
+    for (std::size_t p = 0; p < s.size(); ++p) {
+      got.push_back(pairs[p].impulse);
+      EXPECT_TRUE(feasible_impulse(w.at(p, p), pairs[p].impulse, loads[p]))
+          << n << ", sweep " << k << ", pair " << p;
+    }
+    const double e = energy(w, got, s);
+    EXPECT_LE(e, last + 1e-14 * (1 + std::fabs(last))) << n << ", sweep " << k;
+    last = e;
+  }
+}
+
+// issue 41 - the accelerated sweeps keep block coordinate descent's
+// guarantees: after every sweep each impulse is a point of its own limit
+// set and the energy has not risen, on three pairs of one body and on two
+// rigidly coupled pairs (the first test's cases, Anderson's hardest).
+TEST(JointPairs, EverySweepIsFeasibleAndLowersTheEnergy) {
+  std::mt19937_64 rng(2706);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int n = 0; n < 20; ++n) {
+    std::vector<vec3> s;
+    for (std::size_t p = 0; p < 3; ++p) s.push_back({u(rng), u(rng), u(rng)});
+    expect_every_sweep_feasible_and_lower(three_pairs_on_one_body(rng), s, {0.5, 0.5, 0.5}, n);
+  }
+  for (int n = 0; n < 100; ++n) {
+    const matrix a = spinslide_test::random_spd(rng, 0.05, 0);
+    pair_coupling w(2);
+    for (std::size_t i = 0; i < 2; ++i)
+      for (std::size_t j = 0; j < 2; ++j) w.at(i, j) = a;
+    const double size = std::exp(3 * u(rng) - 2);
+    const vec3 s{size * u(rng), size * u(rng), 5 * size * u(rng)};
+    expect_every_sweep_feasible_and_lower(w, {s, s}, {std::exp(u(rng)), std::exp(u(rng))}, n);
   }
 }
 

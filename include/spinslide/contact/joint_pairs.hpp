@@ -18,18 +18,33 @@
 /// (impulse_friction.hpp) in its own W_ii against the others' latest
 /// impulses: each sweep lowers the energy (block coordinate descent on a
 /// convex function with closed convex blocks), and a pair that sticks in the
-/// answer stops exactly with the others.  The sweeps end when the slips
-/// after the step have converged (solve_jointly), or after `max_sweeps`
-/// (then the last sweep's impulses, each still a point of its own limit set,
-/// are the answer, and the outcome says so).  Gauss–Seidel is slowest where
-/// pairs are rigidly coupled near a stick-slip transition: measured, two
-/// pairs at one point of one body with random W and slips need a median of
-/// 11 sweeps, 176 at the 99th percentile and 1690 at most (tests/
-/// test_joint_pairs.cpp); a plate on two or four feet in MuJoCo, at most 33.
+/// answer stops exactly with the others.
+///
+/// Gauss–Seidel alone is slow where pairs are rigidly coupled near a
+/// stick-slip transition (it zigzags between the pairs' sets), so after
+/// each sweep x → G(x) the sweeps are mixed (Anderson type II over the last
+/// three, detail/anderson_mixing.hpp: y = G(x_k) − Σ γ_a ΔG_a, γ fitting
+/// the residual G(x_k) − x_k by its last differences in the blocks' own
+/// metrics); y, each block projected onto its own limit set, replaces
+/// G(x_k) only if it leaves less energy, by more than the convergence test
+/// resolves.  Every iterate is therefore feasible and at most the plain
+/// sweep's energy from the same point: block coordinate descent's
+/// convergence stays.  A refused mixture keeps the history; three in a row
+/// restart it.  The sweeps end when one has moved the slips after the step
+/// by less than the tolerance (solve_jointly), or after `max_sweeps`; the
+/// answer is always a sweep's (each impulse a point of its own limit set,
+/// and the outcome says whether it converged).  Measured on two pairs at
+/// one point of one body with random W and slips (tests/
+/// test_joint_pairs.cpp, 400 cases): a median of 9 sweeps, 16 at the 99th
+/// percentile, 21 at worst, all converged (with the projections, at most 40
+/// law calls per pair); plain Gauss–Seidel (`accelerate = false`) a median
+/// of 27, 3 623 at the 99th percentile and 3 of 400 unconverged after 5 000.
+/// The MuJoCo adapter keeps plain sweeps (mujoco.hpp says why).
 #ifndef SPINSLIDE_CONTACT_JOINT_PAIRS_HPP
 #define SPINSLIDE_CONTACT_JOINT_PAIRS_HPP
 
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/contact/detail/anderson_mixing.hpp>
 #include <spinslide/contact/detail/matrix3.hpp>
 #include <spinslide/contact/pair_friction.hpp>
 #include <spinslide/contact/planar_metric.hpp>
@@ -109,6 +124,9 @@ struct joint_outcome {
 struct joint_settings {
   double tolerance = 1e-10;  ///< ends the sweeps: a sweep moves the slips by below this, relative
   int max_sweeps = 200;      ///< at most this many sweeps
+  /// Mixes the last sweeps (Anderson, safeguarded; see the file's comment)
+  /// where false leaves plain Gauss–Seidel.
+  bool accelerate = true;
 };
 
 /// `w` made acceptable to planar_metric: symmetrized, and, where its
@@ -177,13 +195,18 @@ class joint_solver {
         const auto moved = detail::multiply(w.at(i, j), pairs[j].impulse);
         for (std::size_t k = 0; k < 3; ++k) slip_[i][k] += moved[k];
       }
+    mixing_.restart(n);
+    refused_ = 0;
     for (out.sweeps = 1; out.sweeps <= settings.max_sweeps; ++out.sweeps) {
       before_ = slip_;
+      keep(pairs, start_);
       for (std::size_t i = 0; i < n; ++i) update(pairs, w, i);
       if (!(moved() > settings.tolerance * settings.tolerance * scale)) {
         out.converged = true;
         break;
       }
+      if (settings.accelerate && out.sweeps < settings.max_sweeps)
+        accelerate(pairs, w, settings.tolerance * settings.tolerance * scale);
     }
     if (out.sweeps > settings.max_sweeps) out.sweeps = settings.max_sweeps;
     return out;
@@ -208,6 +231,71 @@ class joint_solver {
     p.ratio = r.ratio;
   }
 
+  // The impulses into `to`.
+  static void keep(const std::vector<joint_pair>& pairs, std::vector<detail::vector3<double>>& to) {
+    to.resize(pairs.size());
+    for (std::size_t i = 0; i < pairs.size(); ++i) to[i] = pairs[i].impulse;
+  }
+
+  // After a sweep from start_ to the pairs' impulses: the Anderson mixture
+  // of the last sweeps (detail/anderson_mixing.hpp), each block projected
+  // onto its own limit set in its own metric (the law asked for the slip
+  // −Wᵢᵢy, whose answer is that projection), replaces the sweep's impulses
+  // only where it leaves less energy.  So every iterate is feasible and at
+  // most the plain sweep's energy from the same point: the descent, and the
+  // convergence, of block coordinate descent stay.  The gain must exceed
+  // `least_gain` (what the convergence test resolves): a gain of rounding
+  // size says nothing, and where pairs stick together, the load shared in
+  // directions that move nothing (the energy's flat directions), taking it
+  // would only move that share.
+  void accelerate(std::vector<joint_pair>& pairs, const pair_coupling& w, double least_gain) {
+    keep(pairs, swept_);
+    mixing_.push(start_, swept_);
+    mixed_.resize(pairs.size());
+    if (!mixing_.mix(own_, mixed_)) return;
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      joint_pair& p = pairs[i];
+      const auto s = detail::multiply(own_[i].entries(), mixed_[i]);
+      const auto r =
+          p.friction.get().impulse({-s[0], -s[1]}, -s[2], own_[i], p.normal, p.penetration);
+      mixed_[i] = {r.force[0], r.force[1], r.torque};
+    }
+    trial_slip_.resize(pairs.size());
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      trial_slip_[i] = pairs[i].free_motion;
+      for (std::size_t j = 0; j < pairs.size(); ++j) {
+        const auto moved = detail::multiply(w.at(i, j), mixed_[j]);
+        for (std::size_t k = 0; k < 3; ++k) trial_slip_[i][k] += moved[k];
+      }
+    }
+    if (!(energy(pairs, mixed_, trial_slip_) < energy(pairs, swept_, slip_) - least_gain))
+      return refuse();
+    refused_ = 0;
+    for (std::size_t i = 0; i < pairs.size(); ++i) pairs[i].impulse = mixed_[i];
+    slip_ = trial_slip_;
+  }
+
+  // The mixture is not taken: a refusal alone keeps the history, several in
+  // a row restart it.
+  void refuse() {
+    if (++refused_ < refusals_to_restart) return;
+    refused_ = 0;
+    mixing_.forget();
+    mixing_.push(start_, swept_);
+  }
+
+  // ½PᵀWP + sᵀP = Σᵢ Pᵢᵀ(sᵢ + sᵢ')/2, sᵢ' = sᵢ + (WP)ᵢ the slip after: the
+  // kinetic energy after the step less its value at P = 0.
+  static double energy(const std::vector<joint_pair>& pairs,
+                       const std::vector<detail::vector3<double>>& impulse,
+                       const std::vector<detail::vector3<double>>& after) {
+    double sum = 0;
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      for (std::size_t k = 0; k < 3; ++k)
+        sum += impulse[i][k] * (pairs[i].free_motion[k] + after[i][k]) / 2;
+    return sum;
+  }
+
   // Σ Δsᵢᵀ Wᵢᵢ⁻¹ Δsᵢ: how far the last sweep moved the slips after the step.
   double moved() const {
     double sum = 0;
@@ -221,6 +309,18 @@ class joint_solver {
 
   std::vector<planar_metric<double>> own_;  // each pair's own block, conditioned
   std::vector<detail::vector3<double>> slip_, before_;
+  // The impulses before and after the last sweep, the projected mixture and
+  // the slips after it.
+  std::vector<detail::vector3<double>> start_, swept_, mixed_, trial_slip_;
+  detail::anderson_mixing mixing_;
+  // Mixtures refused in a row.  A refusal alone keeps the history (its
+  // iterates still describe the map: measured on the rigidly coupled pairs,
+  // restarting at every refusal stalls the mixing at one difference, 75
+  // sweeps at the 99th percentile and 100 at worst); three in a row restart
+  // it, in case the active set has changed (never restarting: 17 and 21
+  // here, but with five differences one of the 400 cases took 502).
+  static constexpr int refusals_to_restart = 3;
+  int refused_ = 0;
 };
 
 /// joint_solver::solve with a workspace of its own, for one call.
