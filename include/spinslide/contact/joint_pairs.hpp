@@ -256,6 +256,7 @@ class joint_solver {
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       joint_pair& p = pairs[i];
       const auto s = detail::multiply(own_[i].entries(), mixed_[i]);
+      if (!std::isfinite(s[0] + s[1] + s[2])) return refuse();  // the law would refuse it
       const auto r =
           p.friction.get().impulse({-s[0], -s[1]}, -s[2], own_[i], p.normal, p.penetration);
       mixed_[i] = {r.force[0], r.force[1], r.torque};
