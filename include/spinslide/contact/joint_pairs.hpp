@@ -22,10 +22,10 @@
 ///
 /// Gauss–Seidel alone is slow where pairs are rigidly coupled near a
 /// stick-slip transition (it zigzags between the pairs' sets), so after
-/// each sweep x → G(x) the sweeps are mixed (Anderson type II over the last
-/// three, detail/anderson_mixing.hpp: y = G(x_k) − Σ γ_a ΔG_a, γ fitting
-/// the residual G(x_k) − x_k by its last differences in the blocks' own
-/// metrics); y, each block projected onto its own limit set, replaces
+/// each sweep x → G(x) the sweeps are mixed (Anderson acceleration over
+/// the last four sweeps, detail/anderson_mixing.hpp: y = G(x_k) − Σ γ_a
+/// ΔG_a, γ fitting the residual G(x_k) − x_k by its last three differences
+/// in the blocks' own metrics); y, each block projected onto its own limit set, replaces
 /// G(x_k) only if it leaves less energy, by more than the convergence test
 /// resolves.  Every iterate is therefore feasible and at most the plain
 /// sweep's energy from the same point: block coordinate descent's
