@@ -36,6 +36,7 @@ class anderson_mixing {
   /// percentile and 21 at worst, 5 gives 19 and 24, 2 gives 17 and 25 (a
   /// map this nonsmooth is described by few recent iterates).
   static constexpr std::size_t depth = 3;
+  static_assert(depth == 3, "the fit's normal equations are solved as matrix3.hpp's 3x3 system");
 
   /// Forgets the history and sizes it for `blocks` blocks.
   void restart(std::size_t blocks) {
@@ -66,8 +67,8 @@ class anderson_mixing {
   bool mix(const std::vector<planar_metric<double>>& metric, std::vector<vector3<double>>& y) {
     if (count_ < 2) return false;
     const std::size_t m = count_ - 1;
-    std::array<std::array<double, depth>, depth> h{};
-    std::array<double, depth> b{};
+    matrix3<double> h{};  // the fit's normal equations (depth = 3 differences at most)
+    vector3<double> b{};
     for (std::size_t a = 0; a < m; ++a) {
       b[a] = against_newest(metric, slot(a));
       for (std::size_t c = 0; c <= a; ++c) h[a][c] = h[c][a] = inner(metric, slot(a), slot(c));
@@ -119,32 +120,22 @@ class anderson_mixing {
     return {later[0] - earlier[0], later[1] - earlier[1], later[2] - earlier[2]};
   }
 
-  // h γ = b by Cholesky, h shifted by 1e-12 of its trace: the residuals'
+  // h γ = b by Cholesky (matrix3.hpp's, the m fitted rows padded with the
+  // identity, b 0 there), h shifted by 1e-12 of its trace: the residuals'
   // differences become nearly dependent as the sweeps converge, and a
-  // mixture fitted to rounding would only be refused by the safeguard.
-  static bool solve(std::array<std::array<double, depth>, depth>& h, std::array<double, depth>& b,
-                    std::size_t m) {
+  // mixture fitted to rounding would only be refused by the safeguard; a
+  // pivot below 1e-14 of the trace is not trusted.
+  static bool solve(matrix3<double>& h, vector3<double>& b, std::size_t m) {
     double trace = 0;
     for (std::size_t a = 0; a < m; ++a) trace += h[a][a];
     if (!(trace > 0) || !std::isfinite(trace)) return false;
     for (std::size_t a = 0; a < m; ++a) h[a][a] += 1e-12 * trace;
-    for (std::size_t a = 0; a < m; ++a) {
-      for (std::size_t c = 0; c < a; ++c) h[a][a] -= h[a][c] * h[a][c];
-      if (!(h[a][a] > 1e-14 * trace)) return false;
-      h[a][a] = std::sqrt(h[a][a]);
-      for (std::size_t r = a + 1; r < m; ++r) {
-        for (std::size_t c = 0; c < a; ++c) h[r][a] -= h[r][c] * h[a][c];
-        h[r][a] /= h[a][a];
-      }
-    }
-    for (std::size_t a = 0; a < m; ++a) {  // L z = b, then Lᵀ γ = z
-      for (std::size_t c = 0; c < a; ++c) b[a] -= h[a][c] * b[c];
-      b[a] /= h[a][a];
-    }
-    for (std::size_t a = m; a-- > 0;) {
-      for (std::size_t c = a + 1; c < m; ++c) b[a] -= h[c][a] * b[c];
-      b[a] /= h[a][a];
-    }
+    for (std::size_t a = m; a < depth; ++a) h[a][a] = 1;
+    matrix3<double> l{};
+    if (!cholesky(h, l)) return false;
+    for (std::size_t a = 0; a < m; ++a)
+      if (!(l[a][a] * l[a][a] > 1e-14 * trace)) return false;
+    b = cholesky_solve(l, b);
     return true;
   }
 
