@@ -61,22 +61,24 @@ friction_result<Real, Real> project_checked(const Profile& profile,
                                             Real torque_weight, Real start, const char* function,
                                             const curve_point<Real>* from = nullptr) {
   require_projectable<Profile, Real>();
-  const Real f = point.force, t = point.torque, w = torque_weight, s = start;
+  const Real f = point.force, t = point.torque;
   // One test for good arguments; where it fails, the checks one by one
   // report the first bad one.
-  if (!(all_finite(f, t, w) && f >= 0 && t >= 0 && w > 0 && s >= 0)) {
+  if (!(all_finite(f, t, torque_weight) && f >= 0 && t >= 0 && torque_weight > 0 && start >= 0)) {
     using Policy = typename Profile::policy_type;
     const Policy pol;
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     // In this order (an argument list's is unspecified).
     const Real cf = checked(function, "force", f, argument_rule::finite_non_negative, pol);
     const Real ct = checked(function, "torque", t, argument_rule::finite_non_negative, pol);
-    const Real cw = checked(function, "torque_weight", w, argument_rule::finite_positive, pol);
-    const Real cs = checked(function, "start.ratio", s, argument_rule::non_negative, pol);
+    const Real cw =
+        checked(function, "torque_weight", torque_weight, argument_rule::finite_positive, pol);
+    const Real cs = checked(function, "start.ratio", start, argument_rule::non_negative, pol);
     if (any_reported(cf, ct, cw, cs)) return {nan, nan, false, nan};
   }
-  friction_result<Real, Real> r = limit_projector<Profile>(profile, {f, t}, w)(s, from);
-  if (r.sticking) r.point = given_start(s, from);
+  friction_result<Real, Real> r =
+      limit_projector<Profile>(profile, {f, t}, torque_weight)(start, from);
+  if (r.sticking) r.point = given_start(start, from);
   return r;
 }
 
