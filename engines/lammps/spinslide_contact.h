@@ -51,7 +51,6 @@
 #include "granular_model.h"
 
 #include <spinslide/contact/trial_cap.hpp>
-#include <spinslide/values/contact_profile.hpp>
 #include <spinslide/values/profile.hpp>
 
 #include <array>
@@ -238,36 +237,37 @@ struct Springs {
   double k_tw, damp_tw;  // twisting
 };
 
-// The coupled cap on the limit set of the patch's `profile`, at the load `load` = mu N
-// with patch radius a: spinslide::cap_trial_state (trial_cap.hpp) on the
-// springs h (already rotated and stretched) and the damping, which keeps
-// the trial if it sticks and otherwise caps it in the springs' energy
-// metric and rewrites the springs to hold the cap with the damping; the
-// history's curve point starts the search and is updated by a slip.  The
-// friction fs and twisting torque mt out; true if capped.  It raises no
-// error for numerical reasons; a non-finite input (lost atoms) is a domain
-// error.
-inline bool friction_coupled(const spinslide::contact_profile<double>& profile, double* h,
-                             const double* vtr, double twist_rate, const Springs& k, double load,
-                             double a, double* fs, double& mt) {
-  // No trial friction (a new contact, an exact touch with a = 0): nothing
-  // to cap, nothing to rewrite.
-  const double trial_force[3] = {-k.kt * h[0] - k.damp_t * vtr[0], -k.kt * h[1] - k.damp_t * vtr[1],
-                                 -k.kt * h[2] - k.damp_t * vtr[2]};
+// A contact without load or patch (or with a spring of no stiffness): no
+// friction, and the springs hold only the damping.  No trial friction at all
+// (a new contact, an exact touch with a = 0): nothing to rewrite.  False:
+// nothing capped where there is no trial, true otherwise.
+inline bool friction_without_load(double* h, const double* vtr, double twist_rate, const Springs& k,
+                                  double* fs, double& mt) {
+  fs[0] = fs[1] = fs[2] = mt = 0.0;
   const double trial_torque = -k.k_tw * h[kHistTwist] - k.damp_tw * twist_rate;
-  if (trial_force[0] == 0.0 && trial_force[1] == 0.0 && trial_force[2] == 0.0 &&
-      trial_torque == 0.0) {
-    fs[0] = fs[1] = fs[2] = mt = 0.0;
-    return false;
-  }
-  if (!(load > 0.0) || !(a > 0.0) || !(k.kt > 0.0) || !(k.k_tw > 0.0)) {
-    // no load, no friction: the springs hold only the damping
-    fs[0] = fs[1] = fs[2] = mt = 0.0;
-    if (k.kt > 0.0)
-      for (int c = 0; c < 3; ++c) h[c] = -(k.damp_t * vtr[c]) / k.kt;
-    if (k.k_tw > 0.0) h[kHistTwist] = -(k.damp_tw * twist_rate) / k.k_tw;
-    return true;
-  }
+  bool none = trial_torque == 0.0;
+  for (int c = 0; c < 3; ++c) none = none && -k.kt * h[c] - k.damp_t * vtr[c] == 0.0;
+  if (none) return false;
+  if (k.kt > 0.0)
+    for (int c = 0; c < 3; ++c) h[c] = -(k.damp_t * vtr[c]) / k.kt;
+  if (k.k_tw > 0.0) h[kHistTwist] = -(k.damp_tw * twist_rate) / k.k_tw;
+  return true;
+}
+
+// The coupled cap on the limit set of the patch's `profile` (a concrete
+// profile: with_patch_profile), at the load `load` = mu N with patch radius
+// a: spinslide::cap_trial_state (trial_cap.hpp) on the springs h (already
+// rotated and stretched) and the damping, which keeps the trial if it
+// sticks and otherwise caps it in the springs' energy metric and rewrites
+// the springs to hold the cap with the damping; the history's curve point
+// starts the search and is updated by a slip.  The friction fs and twisting
+// torque mt out; true if capped.  It raises no error for numerical reasons;
+// a non-finite input (lost atoms) is a domain error.
+template <class Profile>
+bool friction_coupled(const Profile& profile, double* h, const double* vtr, double twist_rate,
+                      const Springs& k, double load, double a, double* fs, double& mt) {
+  if (!(load > 0.0) || !(a > 0.0) || !(k.kt > 0.0) || !(k.k_tw > 0.0))
+    return friction_without_load(h, vtr, twist_rate, k, fs, mt);
   using vec = std::array<double, 3>;
   const spinslide::spring_trial<vec, double> trial{
       vec{h[0], h[1], h[2]}, h[kHistTwist],
@@ -280,16 +280,16 @@ inline bool friction_coupled(const spinslide::contact_profile<double>& profile, 
   // Most contacts of a pile or a pour stick inside the inner triangle of
   // every limit set: the trial is the friction and the springs stay, as
   // cap_trial_state decides by the same test first (here without its call).
+  // (0.0 + : a trial of exactly zero gives +0, as before the test came
+  // first.)
   if (spinslide::surely_sticks(profile, trial, springs, contact)) {
-    for (int i = 0; i < 3; ++i) fs[i] = trial_force[i];
-    mt = trial_torque;
+    for (int c = 0; c < 3; ++c) fs[c] = 0.0 + (-k.kt * h[c] + trial.damping_force[c]);
+    mt = 0.0 + (-k.k_tw * h[kHistTwist] + trial.damping_torque);
     return false;
   }
   const double* c = h + kHistRatio;
   const spinslide::curve_point<double> start{c[0], c[1], c[2], c[3], c[4]};
-  const auto r = profile.visit([&](const auto& patch) {
-    return spinslide::cap_trial_state(patch, trial, springs, contact, start);
-  });
+  const auto r = spinslide::cap_trial_state(profile, trial, springs, contact, start);
   for (int i = 0; i < 3; ++i) {
     fs[i] = r.force[i];
     h[i] = r.displacement[i];
@@ -331,23 +331,25 @@ inline void rolling_resistance(const ContactLaw& law, const ContactState& s, dou
 
 }  // namespace detail
 
-/// The profile of `law`'s patch (its `profile` keyword, checked by
-/// check_law) as spinslide's run-time handle, whose limit set the coupled
-/// cap projects onto.
-inline spinslide::contact_profile<double> patch_profile(const ContactLaw& law) {
+/// f(profile) on the profile of `law`'s patch (its `profile` keyword,
+/// checked by check_law), whose limit set the coupled cap projects onto:
+/// the concrete profile, so that the cap is compiled for each and a contact
+/// pays no run-time handle (spinslide::contact_profile) or its dispatch.
+template <class F>
+decltype(auto) with_patch_profile(const ContactLaw& law, F&& f) {
   switch (law.profile) {
     case PatchProfile::kDisk:
-      return spinslide::uniform_disk<double>{};
+      return f(spinslide::uniform_disk<double>{});
     case PatchProfile::kRing:
-      return spinslide::ring<double>{};
+      return f(spinslide::ring<double>{});
     case PatchProfile::kBoussinesq:
-      return spinslide::boussinesq<double>{};
+      return f(spinslide::boussinesq<double>{});
     case PatchProfile::kAnnulus:
-      return spinslide::annulus<double>{law.annulus_inner};
+      return f(spinslide::annulus<double>{law.annulus_inner});
     case PatchProfile::kHertz:
       break;
   }
-  return spinslide::hertz<double>{};
+  return f(spinslide::hertz<double>{});
 }
 
 /// One contact's forces from its state and history (kHistSize values),
@@ -390,8 +392,10 @@ inline void contact_force(const ContactLaw& law, const ContactState& s, double* 
 
   if (coupled && law.couplable()) {
     try {
-      out.capped = detail::friction_coupled(patch_profile(law), history, vtr, s.twist_rate, k,
-                                            fscrit, a, out.fs, out.mt);
+      out.capped = with_patch_profile(law, [&](const auto& profile) {
+        return detail::friction_coupled(profile, history, vtr, s.twist_rate, k, fscrit, a, out.fs,
+                                        out.mt);
+      });
     } catch (std::exception& e) {
       // Only a non-finite input reaches here (the cap raises nothing for
       // numerical reasons): lost atoms or a broken overlap.
