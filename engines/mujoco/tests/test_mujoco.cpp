@@ -311,10 +311,19 @@ TEST(MujocoAdapter, PlateOnSeveralFeetHoldsOnASlope) {
 }
 
 // A plate on two and on four feet thrown sliding and spinning on a level
-// floor comes to rest and stays at rest: every pair sticks from the stop on,
-// and, once MuJoCo's soft normal contact has settled from the stopping
-// impulse (0.5 s: the plate rocks on its feet by 1e-8 m at first), no creep
-// and no spin (below 1e-9 m and 1e-9 rad in the next 2 s).
+// floor comes to rest and stays at rest: from the moment every pair sticks
+// on, the plate neither slides nor spins (below 1e-6 m/s and 1e-6 rad/s in
+// the plane, while MuJoCo's soft contact still rocks it: 2.5e-7 m/s at most
+// on two feet) and each pair sticks or holds its friction on its limit; and,
+// once MuJoCo's soft normal contact has settled from the stopping impulse
+// (0.5 s: the plate rocks on its feet by 1e-8 m at first), no creep and no
+// spin (below 1e-9 m and 1e-9 rad in the next 2 s).  Which feet report
+// sticking at rest depends on the solve's path: the plate's load is shared
+// among its feet in directions that move nothing (a statically
+// indeterminate support), the warm start keeps the share the stop left, and
+// with the sweeps' Anderson mixing (joint_pairs.hpp) one foot of four rests
+// with its impulse at its limit and a slip after the step of rounding's
+// size (9e-5 below μΛ here, the plate's in-plane speed 2e-11 m/s).
 TEST(MujocoAdapter, PlateOnSeveralFeetStopsSpinningAndStaysStopped) {
   for (const int feet : {2, 4}) {
     plate p(feet, 0.0, 1e-3);
@@ -333,8 +342,18 @@ TEST(MujocoAdapter, PlateOnSeveralFeetStopsSpinningAndStaysStopped) {
     ASSERT_GT(stopped, 0) << feet << " feet never stopped";
     for (int i = 0; i < 500; ++i) {
       p.friction.step(p.data.get());
-      for (std::size_t k = 0; k < std::size_t(feet); ++k)
-        ASSERT_TRUE(p.friction.report(k).sticking) << k << ", " << i;
+      const double* v = p.data->qvel;
+      ASSERT_LT(std::hypot(v[0], v[1]), 1e-6) << feet << ", " << i;
+      ASSERT_LT(std::fabs(v[5]), 1e-6) << feet << ", " << i;
+      for (std::size_t k = 0; k < std::size_t(feet); ++k) {
+        // A foot that does not stick holds the disk's limit at its ratio:
+        // |P| = μΛ𝓕(ε), μ = 0.2 (plate::disk_friction_of).
+        const spinslide::pair_report& r = p.friction.report(k);
+        if (r.sticking) continue;
+        const double held = std::hypot(r.friction_impulse[0], r.friction_impulse[1]);
+        const double limit = 0.2 * r.normal_impulse * spinslide::uniform_disk<>().force(r.ratio);
+        ASSERT_NEAR(held, limit, 1e-9 * limit) << k << ", " << i;
+      }
     }
     const std::array<double, 7> at{p.data->qpos[0], p.data->qpos[1], p.data->qpos[2],
                                    p.data->qpos[3], p.data->qpos[4], p.data->qpos[5],

@@ -320,13 +320,12 @@ class coupled_friction {
                                   normal_impulse<double>{pair.report.normal_impulse},
                                   pair.report.penetration, pair.impulse});
     }
-    // Plain Gauss–Seidel (issue 41): a plate that stops on several feet
-    // rests with each foot's impulse close to its limit (the stop's load,
-    // shared in directions that move nothing, kept by the warm start), so
-    // which feet report sticking at rest depends on the sweeps' path; with
-    // the mixing one foot of MujocoAdapter.PlateOnSeveralFeetStopsSpinning-
-    // AndStaysStopped reports slipping at rest, at the limit.
-    last_solve_ = solver_.solve(joint_, coupling_, {1e-10, 200, false});
+    // Gauss–Seidel sweeps with Anderson mixing (joint_pairs.hpp; issue 41).
+    // A plate that stops on several feet may rest with one foot's impulse
+    // on its limit (the stop's load shared in directions that move nothing,
+    // kept by the warm start), which then reports slipping at a slip of
+    // rounding's size: MujocoAdapter.PlateOnSeveralFeetStopsSpinningAndStaysStopped.
+    last_solve_ = solver_.solve(joint_, coupling_, {1e-10, 200, true});
     for (std::size_t k = 0; k < active_.size(); ++k) {
       coupled_pair& pair = pairs_[active_[k]];
       pair.report.sticking = joint_[k].sticking;
