@@ -67,6 +67,36 @@ impulse_result<Vec2, Real> sticking_impulse(impulse_result<Vec2, Real> out,
   return out;
 }
 
+// The law on a thin set (impulse_frame's `point`), exactly (thin_set.hpp),
+// from point friction's answer; that answer itself at a = 0, where the
+// spin after it is 0 (the root at ε = ∞), and where the search ends on a
+// number that is not finite (an extreme input's overflow): the guaranteed
+// answer of the limit.  `stop` = W⁻¹s: sticking where the root's disk and
+// torque hold the stopping impulse.
+template <class Profile, class Vec2, class Real = typename Profile::value_type>
+impulse_result<Vec2, Real> thin_set_result(const Profile& profile, impulse_result<Vec2, Real> out,
+                                           const law_inputs<Real>& law, Real a,
+                                           const vector3<Real>& stop) {
+  using std::fabs;
+  const point_answer<Real> q = point_answer_for(law);
+  const Real guess = point_ratio(profile, q, a, law.load);
+  if (!(a > 0 && q.spin != 0 && guess < std::numeric_limits<Real>::infinity()))
+    return point_limit_result(out, q, a);
+  const thin_set<Profile> thin(profile, law, a, q.spin < 0 ? Real(-1) : Real(1));
+  const thin_trial<Real> t = thin.solve(guess > 0 ? guess : Real(1));
+  if (!all_finite(t.p.force[0], t.p.force[1], t.torque, t.miss))
+    return point_limit_result(out, q, a);
+  if (t.p.slip == 0 && length(stop[0], stop[1]) <= law.load * t.ft.force &&
+      fabs(stop[2]) <= fabs(t.torque))
+    return sticking_impulse(out, stop);
+  set<0>(out.force, t.p.force[0]);
+  set<1>(out.force, t.p.force[1]);
+  out.torque = t.torque;
+  out.ratio = t.ratio;
+  out.point = {t.ratio, t.ft.force, t.ft.torque};
+  return out;
+}
+
 // The impulse law's errors, where its one test of good arguments failed:
 // the checks one by one report the first bad one, through the policy; the
 // result NaN where the policy does not throw.
@@ -117,7 +147,7 @@ BOOST_NOINLINE impulse_result<Vec2, typename Profile::value_type> impulse_beyond
   const Real vx = slip[0], vy = slip[1], w = slip[2];
   if (load == 0 || (vx == 0 && vy == 0 && w == 0)) {
     out.sticking = vx == 0 && vy == 0 && w == 0;
-    if (!out.sticking) out.ratio = slip_ratio(Real(std::hypot(vx, vy)), a, w);
+    if (!out.sticking) out.ratio = slip_ratio(length(vx, vy), a, w);
     return out;
   }
   const impulse_frame<Real> frame =
@@ -131,7 +161,7 @@ BOOST_NOINLINE impulse_result<Vec2, typename Profile::value_type> impulse_beyond
         a, pol);
     return reported_impulse<Vec2>(start);
   }
-  if (frame.point) return point_limit_result(out, inverse_mass, slip, a, load);
+  if (frame.point) return thin_set_result(profile, out, {inverse_mass, slip, load}, a, stop);
   // z = −W⁻¹s in the frame's units (L = cτ), likewise.
   const vector3<Real> target{-stop[0] / load, -stop[1] / load, -stop[2] / frame.c / load};
   const friction_result<std::array<Real, 2>, Real> r =

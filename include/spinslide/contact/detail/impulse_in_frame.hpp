@@ -2,10 +2,10 @@
 //  Distributed under the Boost Software License, Version 1.0.
 //  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
 //
-// The impulse law's two ways to its answer once its frame is chosen
+// The impulse law's ways to its answer once its frame is chosen
 // (impulse_frame.hpp): the 3-D projection in the frame's units, returned in
-// the limit set's (f, t = L/(μΛa)), and the limit a → 0, point friction
-// (point_friction.hpp).
+// the limit set's (f, t = L/(μΛa)); point friction (point_friction.hpp),
+// the limit a → 0 and the start for a thin set (thin_set.hpp).
 #ifndef SPINSLIDE_CONTACT_DETAIL_IMPULSE_IN_FRAME_HPP
 #define SPINSLIDE_CONTACT_DETAIL_IMPULSE_IN_FRAME_HPP
 
@@ -15,6 +15,7 @@
 #include <spinslide/contact/detail/matrix3.hpp>
 #include <spinslide/contact/detail/metric_projector.hpp>
 #include <spinslide/contact/detail/point_friction.hpp>
+#include <spinslide/contact/detail/thin_set.hpp>
 #include <spinslide/contact/detail/torque_scaled.hpp>
 #include <spinslide/contact/planar_metric.hpp>
 
@@ -54,35 +55,46 @@ Real rough_ratio_at_force(const Profile& profile, Real force) {
   return (r.first + r.second) / 2;
 }
 
-// The start of a projection onto a thin set (frame.k ≤ 1e-3) given none:
-// the ratio point friction's answer leaves (the limit a → 0, which a thin
-// set is near).  From a start on the flat set's cap, away from it, Newton's
-// steps cross D's core |s_f| ≈ k|s_t| (a cone at the scale of the set's
-// thickness) in steps of that size: at k = 1e-15 it ran out of iterations at
-// points that added energy.  Its slide goes on: ε' = |v⁺|/(c|ω⁺|); it
-// stopped: the ratio where 𝓕 is the impulse's |P|/(μΛ), times k.
-template <class Profile, class Real = typename Profile::value_type>
-Real thin_start(const Profile& profile, const impulse_frame<Real>& frame,
-                const planar_metric<Real>& w, const vector3<Real>& slip, Real load) {
-  using std::fabs;
-  const point_impulse<Real> p = point_friction(w.entries(), slip[0], slip[1], load);
-  const auto& m = w.entries();
-  const Real spin = slip[2] + m[2][0] * p.force[0] + m[2][1] * p.force[1];
-  if (p.slip > 0) return p.slip / fabs(frame.c * spin);  // ∞ (no start) if spin = 0
-  // (No slide at all, P = 0: the thin set's answer is near pure spin, ε → 0.)
-  const Real f = length(p.force[0], p.force[1]) / load;
-  if (!(f > 0)) return frame.k * Real(1e-3);
-  return f < 1 ? frame.k * rough_ratio_at_force(profile, f) : Real(0);
+// Point friction's answer (point_friction.hpp, the limit a → 0) for the
+// slip and μΛ of `law`, and the spin after it, σ₀ = ω + W_ωf·P₀.
+template <class Real>
+struct point_answer {
+  point_impulse<Real> p;
+  Real spin;
+};
+
+template <class Real>
+point_answer<Real> point_answer_for(const law_inputs<Real>& law) {
+  const auto& m = law.w.entries();
+  const point_impulse<Real> p = point_friction(m, law.slip[0], law.slip[1], law.load);
+  return {p, law.slip[2] + m[2][0] * p.force[0] + m[2][1] * p.force[1]};
 }
 
-// What a start for a thin set is found from: W, the slip before the step
-// and μΛ.
-template <class Real>
-struct law_inputs {
-  const planar_metric<Real>& w;
-  const vector3<Real>& slip;
-  Real load;
-};
+// The ratio (in the profile's units) that point friction's answer leaves
+// on a patch of radius a: where its slide goes on, ε = |v⁺|/(a|ω⁺|) (∞ if
+// the spin after it is 0); where it stopped, the ratio where 𝓕 is the
+// impulse's |P|/(μΛ), to 12 bits (0 on the circle itself); where there is
+// no slide at all (P = 0), 1e-3, near pure spin.  A start for a thin set,
+// which is near that limit.
+template <class Profile, class Real = typename Profile::value_type>
+Real point_ratio(const Profile& profile, const point_answer<Real>& q, Real a, Real load) {
+  if (q.p.slip > 0) return slip_ratio(q.p.slip, a, q.spin);
+  const Real f = length(q.p.force[0], q.p.force[1]) / load;
+  if (!(f > 0)) return Real(1e-3);
+  return f < 1 ? rough_ratio_at_force(profile, f) : Real(0);
+}
+
+// The start of a projection onto a thin set (frame.k ≤ 1e-3) given none:
+// the ratio point friction's answer leaves (point_ratio, in the frame's
+// units: times k).  From a start on the flat set's cap, away from it,
+// Newton's steps cross D's core |s_f| ≈ k|s_t| (a cone at the scale of the
+// set's thickness) in steps of that size: at k = 1e-15 it ran out of
+// iterations at points that added energy.
+template <class Profile, class Real = typename Profile::value_type>
+Real thin_start(const Profile& profile, const impulse_frame<Real>& frame,
+                const law_inputs<Real>& law) {
+  return frame.k * point_ratio(profile, point_answer_for(law), frame.k * frame.c, law.load);
+}
 
 // The nearest point of L₃ to `target` (in the frame's units) in the frame's
 // metric, for a frame whose curve is scaled (k ≠ 1; impulse_friction
@@ -99,11 +111,10 @@ friction_result<std::array<Real, 2>, Real> project_in_frame(const Profile& profi
   // The start and the answer between the units: ε' = kε, 𝓣' = k𝓣, 𝓕′' = 𝓕′/k.
   const Real k = frame.k;
   const bool given = s0 > 0 && s0 < std::numeric_limits<Real>::infinity();
-  const curve_point<Real> from =
-      given || k > Real(1e-3)
-          ? curve_point<Real>{k * s0, start.force, k * start.torque, start.slope / k,
-                              start.curvature / (k * k)}
-          : curve_point<Real>{thin_start(profile, frame, law.w, law.slip, law.load)};
+  const curve_point<Real> from = given || k > Real(1e-3)
+                                     ? curve_point<Real>{k * s0, start.force, k * start.torque,
+                                                         start.slope / k, start.curvature / (k * k)}
+                                     : curve_point<Real>{thin_start(profile, frame, law)};
   const torque_scaled<Profile> curve(profile, k);
   friction_result<std::array<Real, 2>, Real> r = metric_projector<torque_scaled<Profile>>(
       curve, target, frame.metric, frame.inverse)(from.ratio, &from);
@@ -115,22 +126,19 @@ friction_result<std::array<Real, 2>, Real> project_in_frame(const Profile& profi
   return r;
 }
 
-// The law's answer in the limit a → 0 (frame.point): the linear impulse of
-// point friction, no angular impulse; the slip after the step goes on at
-// ε = |v⁺|/(a|ω⁺|) (`out` carries the result's other fields).  Sticking only
-// where the spin is 0 too.
+// The law's answer in the limit a → 0: point friction's impulse `q`, no
+// angular impulse; the slip after the step goes on at ε = |v⁺|/(a|ω⁺|)
+// (`out` carries the result's other fields).  Sticking only where the spin
+// is 0 too.
 template <class Vec2, class Real>
 impulse_result<Vec2, Real> point_limit_result(impulse_result<Vec2, Real> out,
-                                              const planar_metric<Real>& w,
-                                              const vector3<Real>& slip, Real a, Real load) {
-  const point_impulse<Real> p = point_friction(w.entries(), slip[0], slip[1], load);
-  const auto& m = w.entries();
-  const Real spin = slip[2] + m[2][0] * p.force[0] + m[2][1] * p.force[1];
-  set<0>(out.force, p.force[0]);
-  set<1>(out.force, p.force[1]);
+                                              const point_answer<Real>& q, Real a) {
+  set<0>(out.force, q.p.force[0]);
+  set<1>(out.force, q.p.force[1]);
   out.torque = 0;
-  out.sticking = p.slip == 0 && spin == 0;
-  out.ratio = out.sticking ? std::numeric_limits<Real>::quiet_NaN() : slip_ratio(p.slip, a, spin);
+  out.sticking = q.p.slip == 0 && q.spin == 0;
+  out.ratio =
+      out.sticking ? std::numeric_limits<Real>::quiet_NaN() : slip_ratio(q.p.slip, a, q.spin);
   out.point = {};
   return out;
 }
