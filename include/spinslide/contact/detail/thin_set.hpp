@@ -40,6 +40,7 @@
 #include <spinslide/contact/planar_metric.hpp>
 #include <spinslide/values/force_torque_result.hpp>
 
+#include <boost/config.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/precision.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
@@ -80,7 +81,10 @@ class thin_set {
   thin_set(const Profile& profile, const law_inputs<Real>& law, Real a, Real sign)
       : p_(profile), m_(law.w.entries()), s_(law.slip), load_(law.load), a_(a), sign_(sign) {}
 
-  thin_trial<Real> at(Real eps) const {
+  // (Out of line: a call site of the profile's values that the common
+  // path's inlining does not see; inlined, it cost Boussinesq's float
+  // projection 51 instructions, tools/path_instructions.py.)
+  BOOST_NOINLINE thin_trial<Real> at(Real eps) const {
     thin_trial<Real> t;
     t.ratio = eps;
     t.ft = p_.force_torque(eps);
