@@ -14,14 +14,15 @@
 //    c = 1 and the metric is W itself, which planar_metric accepted);
 //  - where then k, times the profile's own width 2/⟨1/r⟩ where that is
 //    below 1, is below 16√κ ε_mach (κ = ‖CWC‖_F‖(CWC)⁻¹‖_F: a = 0, or a
-//    patch 1e-14 of W's scale in double), the limit a → 0 itself: point
-//    friction (point_friction.hpp).  Below that the 3-D projection cannot
+//    patch 1e-14 of W's scale in double), no projection: the thin set's
+//    answer in the impulse's own variables (thin_set.hpp; point friction,
+//    point_friction.hpp, at a = 0).  Below that the 3-D projection cannot
 //    resolve the answer: on a thin set the slip's force part is about
 //    k|s_t|, at the rounding of s (random metrics: energy rising from
-//    k = 1.6e-14 at κ = 1.8e6 down, none above).  Point friction's impulse
-//    differs from the thin set's by about κk of μΛ (measured at the
-//    threshold: 5.6e-10 in double, 1.1e-2 in float, for κ up to 1e3:
-//    docs/theory.md §11).
+//    k = 1.6e-14 at κ = 1.8e6 down, none above).  The kernel answers each
+//    component to a few ulp of its own scale (μΛ, μΛa⟨r⟩) times the
+//    problem's own conditioning, where point friction was off by about κk
+//    of μΛ and by all of the torque (tests/test_thin_set.cpp).
 //  - a patch beyond 1/(16√κ ε_mach) of W's scale (1e13 of it in double, a
 //    patch larger than any body it joins) is a bad argument, a domain error:
 //    the fuzzer found the projection wrong (more energy) for a = 1e238 m.
@@ -44,7 +45,7 @@ template <class Real>
 struct impulse_frame {
   Real c = 1;              // the angular impulse's unit: L = cτ
   Real k = 1;              // a/c: the curve's torque axis times k (1: the profile's own curve)
-  bool point = false;      // the limit a → 0: point friction, no projection
+  bool point = false;      // a thin set: no projection (thin_set.hpp)
   bool too_large = false;  // a beyond 1/(16√κ ε_mach) times W's scale: a domain error
   matrix3<Real> metric, inverse;  // CWC and C⁻¹W⁻¹C⁻¹ (always set: scale_metric)
 };
