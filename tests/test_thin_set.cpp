@@ -30,6 +30,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <random>
 
 #include "foot_metric.hpp"
@@ -152,6 +153,23 @@ thin_case<Real> draw(std::mt19937_64& rng, int n) {
 // the problem's spread below the switch; above it, the 3-D projection's
 // own bound, `few` ulp times κ (metric_projector.hpp).  Returns the worst
 // gap below the switch over the spread.
+// One case at its radius against the reference, to `bound` ulp of each
+// component's scale times the larger of 1 and the problem's spread: the
+// gaps over that, or nothing where the reference sticks or a = 0 (for a = 0:
+// test_grazing_contact.cpp).
+template <class Of, class Real>
+std::optional<gap> compare_at(const thin_case<Real>& c, double bound, std::mt19937_64& rng) {
+  const auto exact = law<Of>(converted<big>(c));
+  if (exact.sticking || c.a == 0) return std::nullopt;
+  const gap g = ulp_gap<Of>(c, law<Of>(c), exact);
+  const gap s = spread<Of>(c, exact, rng);
+  const gap relative{g.force / std::max(1.0, s.force), g.torque / std::max(1.0, s.torque)};
+  const double ratio = static_cast<double>(exact.ratio);
+  EXPECT_LE(relative.force, bound) << "spread " << s.force << ", ratio " << ratio;
+  EXPECT_LE(relative.torque, bound) << "spread " << s.torque << ", ratio " << ratio;
+  return relative;
+}
+
 template <class Of, class Real>
 gap against_reference(int count, double few) {
   std::mt19937_64 rng(41);
@@ -167,23 +185,11 @@ gap against_reference(int count, double few) {
     for (const double at : {0.0, 1e-6, 0.1, 0.999, 1.001, 10.0}) {
       c.a = Real(at * edge);
       const bool thin = detail::impulse_frame_for(w, c.a, core).point;
-      const auto exact = law<Of>(converted<big>(c));
-      const auto r = law<Of>(c);
-      if (exact.sticking || c.a == 0) continue;  // a = 0: test_grazing_contact.cpp
-      const gap g = ulp_gap<Of>(c, r, exact);
-      const gap s = spread<Of>(c, exact, rng);
-      SCOPED_TRACE(::testing::Message() << "n = " << n << ", a = " << at << " of the switch, "
-                                        << "ratio " << static_cast<double>(exact.ratio));
-      if (thin) {
-        ++below;
-        EXPECT_LE(g.force, few * std::max(1.0, s.force)) << "spread " << s.force;
-        EXPECT_LE(g.torque, few * std::max(1.0, s.torque)) << "spread " << s.torque;
-        worst = {std::max(worst.force, g.force / std::max(1.0, s.force)),
-                 std::max(worst.torque, g.torque / std::max(1.0, s.torque))};
-      } else {
-        EXPECT_LE(g.force, few * kappa * std::max(1.0, s.force));
-        EXPECT_LE(g.torque, few * kappa * std::max(1.0, s.torque));
-      }
+      SCOPED_TRACE(::testing::Message() << "n = " << n << ", a = " << at << " of the switch");
+      const std::optional<gap> g = compare_at<Of>(c, thin ? few : few * kappa, rng);
+      if (!g || !thin) continue;
+      ++below;
+      worst = {std::max(worst.force, g->force), std::max(worst.torque, g->torque)};
     }
   }
   EXPECT_GE(below, count);
@@ -207,6 +213,20 @@ TEST(ThinSet, UniformDiskWithinAFewUlpOfTheExactAnswer) {
   against_reference<disk_profile, float>(50, 16);
 }
 
+// The slip after the step s + Wp in 50 digits, and the sum of its terms'
+// magnitudes (its rounding's scale in Real).
+inline void slip_after(const thin_case<big>& b, const std::array<big, 3>& p,
+                       std::array<big, 3>& after, std::array<big, 3>& terms) {
+  for (std::size_t i = 0; i < 3; ++i) {
+    after[i] = b.slip[i];
+    terms[i] = abs(b.slip[i]);
+    for (std::size_t j = 0; j < 3; ++j) {
+      after[i] += b.w[i][j] * p[j];
+      terms[i] += abs(b.w[i][j] * p[j]);
+    }
+  }
+}
+
 // The law's conditions at the kernel's answer, in 50 digits from its
 // returned values: on the curve at its own ratio, |P| = μΛ𝓕(ε) and |L| =
 // μΛa𝓣(ε) (to a few ulp of each one's scale); the torque against the spin
@@ -225,15 +245,7 @@ bool check_conditions(const thin_case<Real>& c,
   EXPECT_LE(static_cast<double>(abs(abs(l) / (b.load * b.a) - ft.torque) / sphere.mean_radius()),
             8 * ulp);
   std::array<big, 3> after{}, terms{};
-  const std::array<big, 3> p{px, py, l};
-  for (std::size_t i = 0; i < 3; ++i) {
-    after[i] = b.slip[i];
-    terms[i] = abs(b.slip[i]);
-    for (std::size_t j = 0; j < 3; ++j) {
-      after[i] += b.w[i][j] * p[j];
-      terms[i] += abs(b.w[i][j] * p[j]);
-    }
-  }
+  slip_after(b, {px, py, l}, after, terms);
   if (l != 0) {
     EXPECT_LT(l * after[2], 0) << "the torque is against the spin after the step";
   }
