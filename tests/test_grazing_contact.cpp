@@ -442,3 +442,32 @@ TEST(GrazingContact, RegressionThinPatchOfAConcentratedLoad) {
   EXPECT_LE(std::hypot(r.force[0], r.force[1]),
             1.2392140197186438666 * 0.505876144711100206308 * (1 + 1e-12));
 }
+
+// issue 41, fuzz_impulse after the thin set's kernel (thin_set.hpp): a
+// patch of 6.7e-97 m in an inverse mass of size 1e-40 with a linear slip of
+// 7.7e49: the kernel's misses overflowed at the ends of its bracket, TOMS
+// 748 interpolated a ratio that was not a number, and the profile raised a
+// domain error inside the step.  Now such a search ends, and the answer is
+// point friction's, the limit's guaranteed one: no exception, no energy
+// added, within the load.
+TEST(GrazingContact, RegressionThinSetSearchWhoseMissesOverflow) {
+  const auto profile =
+      spinslide::weighted_sum({18147.7809862788089958, 18147.7809863932707231},
+                              spinslide::scaled<spinslide::uniform_disk<>>(
+                                  spinslide::uniform_disk<>(), 0.603921568627451943456),
+                              spinslide::ring<>());
+  const auto w = metric_of(
+      {5.03822607074202414446e-41, 5.03821607074202367717e-41, -6.65441656952315104034e-41,
+       5.03821607074202367717e-41, 1.00752068349840169231e-40, -9.1866897868907220724e-41,
+       -6.65441656952315104034e-41, -9.1866897868907220724e-41, 1.13356611213521740219e-40});
+  const std::array<double, 3> s{7.68463292285583707332e+49, 6.6608462908091579737e-140,
+                                6.6608462908091579737e-140};
+  const double normal = 6.701283273246188529e-98, mu = 0.854879940258665538266;
+  spinslide::impulse_result<std::array<double, 2>, double> r{};
+  ASSERT_NO_THROW(r = spinslide::impulse_friction(profile, std::array<double, 2>{s[0], s[1]}, s[2],
+                                                  w,
+                                                  contact(6.65710292151228178857e-97, normal, mu)));
+  const auto e = energies(w, s, r);
+  EXPECT_LE(e[1], e[0] * (1 + 1e-12));
+  EXPECT_LE(std::hypot(r.force[0], r.force[1]), normal * mu * (1 + 1e-12));
+}

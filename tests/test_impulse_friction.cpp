@@ -261,6 +261,29 @@ TEST(ImpulseFriction, OverflowsAreRefusedBeforeTheySeemToStick) {
   EXPECT_EQ(held.torque, 0);
 }
 
+// fuzz_impulse (issue 41): a normal impulse of −0 (which passes Λ ≥ 0)
+// gives a load μΛ of −0, whose quotients turned the inner triangle's test
+// around: an overflowing stopping impulse was taken as sticking and
+// returned as −∞.  No load: no friction, for −0 as for +0, and the
+// overflow is refused wherever it counts.
+TEST(ImpulseFriction, RegressionANegativeZeroLoadDoesNotStick) {
+  const ring<> ring_profile;
+  const planar_metric<double> identity(matrix{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
+  for (const double zero : {0.0, -0.0}) {
+    const auto r =
+        impulse_friction(ring_profile, vec2{1e-3, 2e-3}, 0.5, identity, contact(1, zero, 0.5));
+    EXPECT_FALSE(r.sticking);
+    EXPECT_EQ(r.force[0], 0);
+    EXPECT_EQ(r.force[1], 0);
+    EXPECT_EQ(r.torque, 0);
+  }
+  const double big = std::numeric_limits<double>::max();
+  const planar_metric<double> light(matrix{{{1e-10, 0, 0}, {0, 1e-10, 0}, {0, 0, 1e-10}}});
+  EXPECT_THROW(
+      impulse_friction(ring_profile, vec2{big, big}, big, light, contact(big, -0.0, 1e-300)),
+      std::domain_error);
+}
+
 // The kinetic energy ½ sᵀW⁻¹s before and after the impulse r.
 template <class Impulse>
 std::array<double, 2> energies(const planar_metric<double>& inverse_mass,

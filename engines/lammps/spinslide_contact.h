@@ -55,6 +55,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <exception>
 #include <limits>
 
@@ -283,14 +284,14 @@ bool friction_coupled(const Profile& profile, double* h, const double* vtr, doub
   // (0.0 + : a trial of exactly zero gives +0, as before the test came
   // first.)
   if (spinslide::surely_sticks(profile, trial, springs, contact)) {
-    for (int c = 0; c < 3; ++c) fs[c] = 0.0 + (-k.kt * h[c] + trial.damping_force[c]);
+    for (std::size_t c = 0; c < 3; ++c) fs[c] = 0.0 + (-k.kt * h[c] + trial.damping_force[c]);
     mt = 0.0 + (-k.k_tw * h[kHistTwist] + trial.damping_torque);
     return false;
   }
   const double* c = h + kHistRatio;
   const spinslide::curve_point<double> start{c[0], c[1], c[2], c[3], c[4]};
   const auto r = spinslide::cap_trial_state(profile, trial, springs, contact, start);
-  for (int i = 0; i < 3; ++i) {
+  for (std::size_t i = 0; i < 3; ++i) {
     fs[i] = r.force[i];
     h[i] = r.displacement[i];
   }

@@ -225,12 +225,14 @@ impulse_result<Vec2, typename Profile::value_type> impulse_friction(
   // Sticking is decided on z's magnitudes (L₃ = {(|f|, |t|) ∈ L}) where
   // they lie in L's inner triangle, in the limit set's units (divided by a,
   // then by the load: μΛa itself may be subnormal), before any evaluation
-  // or metric, and before z's own tests: a z that overflowed, and a load of
-  // 0 or beyond the largest value (with a > 0, μΛa⟨r⟩ is then too), fail
-  // the triangle's comparisons, and the rest tests them.
+  // or metric, and before z's own tests: a z that overflowed and a load
+  // beyond the largest value (with a > 0, μΛa⟨r⟩ is then too) fail the
+  // triangle's comparisons, a load of 0 its own test (−0, from Λ = −0,
+  // would turn the quotients' signs: fuzz_impulse found a z of ∞ taken as
+  // sticking), and the rest tests them.
   using std::fabs;
   const Real load = mu * n, top = profile.mean_radius();
-  if (a > 0 && Real(load * (a * top)) <= boost::math::tools::max_value<Real>() &&
+  if (a > 0 && load > 0 && Real(load * (a * top)) <= boost::math::tools::max_value<Real>() &&
       detail::in_sticking_triangle(Real(stop[0] / load), Real(stop[1] / load),
                                    Real(fabs(stop[2]) / a / load), top)) {
     impulse_result<Vec2, Real> out{Vec2{}, Real(0), false, std::numeric_limits<Real>::quiet_NaN(),

@@ -84,9 +84,12 @@ class thin_set {
   // (Out of line: a call site of the profile's values that the common
   // path's inlining does not see; inlined, it cost Boussinesq's float
   // projection 51 instructions, tools/path_instructions.py.)
+  // A ratio that is not a number (from a bracket whose misses overflowed)
+  // is not evaluated: its miss is NaN, which ends the search.
   BOOST_NOINLINE thin_trial<Real> at(Real eps) const {
-    thin_trial<Real> t;
+    thin_trial<Real> t{};
     t.ratio = eps;
+    if (!(eps >= 0)) return unresolved(t);
     t.ft = p_.force_torque(eps);
     t.torque = -sign_ * product(load_, a_, t.ft.torque);
     const Real vx = s_[0] + m_[0][2] * t.torque, vy = s_[1] + m_[1][2] * t.torque;
@@ -121,6 +124,11 @@ class thin_set {
       }
       if (!(lo.miss > 0)) return lo;  // 0: the root; < 0: the slide all but stopped
     }
+    // TOMS 748 interpolates between the ends' misses: both must be numbers
+    // (an extreme input's misses overflow; fuzz_impulse found a NaN ratio
+    // reaching the profile, which refused it).
+    if (!((boost::math::isfinite)(lo.miss) && (boost::math::isfinite)(hi.miss)))
+      return unresolved(lo);
     auto miss = [this](Real e) {
       const Real h = at(e).miss;
       return h == h ? h : Real(0);  // not a number: end here
@@ -133,6 +141,13 @@ class thin_set {
   }
 
  private:
+  // `t` marked as no answer (its miss NaN: the caller's answer is then point
+  // friction's, the limit's guaranteed one).
+  static thin_trial<Real> unresolved(thin_trial<Real> t) {
+    t.miss = std::numeric_limits<Real>::quiet_NaN();
+    return t;
+  }
+
   static constexpr std::uintmax_t max_steps = 4 * std::numeric_limits<Real>::digits;
 
   const Profile& p_;
