@@ -31,6 +31,7 @@
 #include <spinslide/values/detail/force_slope.hpp>
 #include <spinslide/values/force_torque_result.hpp>
 
+#include <boost/config.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/precision.hpp>
 
@@ -85,10 +86,17 @@ class limit_projector {
  private:
   // Apart from the tests above, so that a caller inlines those (a stick costs
   // the triangle's test); warm steps first, without a start from the guess.
-  projection project(Real start, const curve_point<Real>* from) {
+  // Out of line, and the safeguarded search out of line again: a warm step
+  // then runs in a small function, not in the search's frame (about 5 to 45
+  // instructions less a warm projection or trial cap: tools/path_instructions).
+  BOOST_NOINLINE projection project(Real start, const curve_point<Real>* from) {
     projection warm{};
     if (!(start > 0 && start < inf())) start = first_ratio(start);
     if (warm_steps(start, from, warm)) return warm;
+    return search(start);
+  }
+  // The safeguarded search from `start`.
+  BOOST_NOINLINE projection search(Real start) {
     lo_ = {Real(0), {Real(0), top_}, x_, Real(0)};
     hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0)};
     previous_ = {};

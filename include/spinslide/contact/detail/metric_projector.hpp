@@ -33,6 +33,7 @@
 #include <spinslide/contact/planar_metric.hpp>
 #include <spinslide/values/detail/force_slope.hpp>
 
+#include <boost/config.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/precision.hpp>
 
@@ -80,12 +81,20 @@ class metric_projector {
   // curve point `from` (at the ratio `start`, its 𝓕 and 𝓣 finite) that the
   // contact's last projection left, whose values save an evaluation.
   projection operator()(Real start, const curve_point<Real>* from = nullptr) {
-    using std::fabs;
     if (largest(z_) > far()) return support_point();
     if constexpr (fused_value_slope<Profile>::value) {
       projection quick;
       if (fast(start, from, quick)) return quick;
     }
+    return careful(start, from);
+  }
+
+ private:
+  // The careful iteration, out of line so that the fast path runs in a small
+  // frame (about 20 to 50 instructions less a warm impulse:
+  // tools/path_instructions).
+  BOOST_NOINLINE projection careful(Real start, const curve_point<Real>* from) {
+    using std::fabs;
     // With a start: if z lies beyond the support plane of L₃ with the normal
     // n at the start's curve point (zᵀn > D(n) = max over L₃ of pᵀn), z is
     // outside and n a descent direction: Newton from there, one evaluation
@@ -127,7 +136,6 @@ class metric_projector {
     return result_on_ray(r, {flat.force, flat.torque}, flat.ratio);
   }
 
- private:
   // Beyond this distance from L₃ (whose points are O(1)) Ψ's quadratic term
   // could overflow (|z|² of the largest value over 256), and the nearest
   // point is the support point below to rounding: its direction is off by

@@ -14,6 +14,8 @@
 #include <spinslide/values/detail/disk_tables.hpp>
 #include <spinslide/values/detail/horner.hpp>
 
+#include <boost/config.hpp>
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -140,8 +142,10 @@ inline void disk_fast(Real eps_in, Real& force, Real& torque) {
 struct disk_fast_derivatives {
   double force, torque, slope, curvature;
 };
+// Always inlined: the projections' warm steps call it from small frames of
+// their own (limit_projector.hpp), where g++ would otherwise call it.
 template <class Real, bool Curvature>
-inline disk_fast_derivatives disk_fast_slope(Real eps_in) {
+BOOST_FORCEINLINE disk_fast_derivatives disk_fast_slope(Real eps_in) {
   using table = disk_table<Real>;
   const disk_point d = disk_locate(eps_in);
   const double *c = table::data(), eps = d.eps, k = d.k, y = d.y, x = d.x, scale = c[d.p];
