@@ -19,6 +19,8 @@
 #include <spinslide/values/disk.hpp>
 #include <spinslide/values/erased_profile.hpp>
 #include <spinslide/values/force_torque_result.hpp>
+#include <spinslide/values/friction_wrench.hpp>
+#include <spinslide/values/polygon_patch.hpp>
 #include <spinslide/values/profile.hpp>
 #include <spinslide/values/profile_base.hpp>
 #include <spinslide/values/profile_concept.hpp>

@@ -162,6 +162,17 @@ T checked_constructor_argument(const char* function, const char* name, T x, argu
   return checked(function, name, x, rule, constructor_policy<Policy>());
 }
 
+/// Refuses a constructor's argument that breaks a rule no `argument_rule`
+/// states (the shape of a flat patch: too few vertices, a repeated vertex, a
+/// non-convex outline): std::domain_error "Error in function <function>: Got
+/// <name> = <value>, but it must be <requirement>.", whatever `Policy` says.
+template <class Policy = boost::math::policies::policy<>, class T>
+[[noreturn]] void refuse_constructor_argument(const char* function, const char* name,
+                                              const char* requirement, T value) {
+  raise_argument_error(function, name, requirement, value, constructor_policy<Policy>());
+  throw std::domain_error(function);  // not reached: the policy throws
+}
+
 /// True if every one of `xs` is finite: x − x is 0 for a finite x and NaN
 /// for ±∞ or NaN, so one comparison tests them all (the entry points' test
 /// of good arguments, before any check one by one).

@@ -1,0 +1,197 @@
+//  Copyright (c) 2026 the spinslide developers.
+//  Distributed under the Boost Software License, Version 1.0.
+//  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
+//
+/// \file friction_wrench.hpp
+/// The exact friction wrench of a flat patch (polygon_patch.hpp) moving with
+/// a planar twist, per unit μN (docs/patches.md): the slip velocity at x is
+/// u(x) = v + ω ẑ × x, the friction density −p û, so that
+///   F = −∬ p û dA,   τ = −∬ p (x × û) dA (about the patch origin),
+/// and the dissipation D = ∬ p |u| dA, of which (F, τ) is minus the gradient.
+/// Near the instantaneous centre c = ẑ × v/ω the closed-form edge sums
+/// (detail/patch_edge_sums.hpp), far from it (and for ω = 0) the multipole
+/// expansion (detail/patch_multipole.hpp); nothing allocates, nothing throws
+/// but the policy's error for a bad twist.
+
+#ifndef SPINSLIDE_VALUES_FRICTION_WRENCH_HPP
+#define SPINSLIDE_VALUES_FRICTION_WRENCH_HPP
+
+#include <spinslide/base/detail/checks.hpp>
+#include <spinslide/values/detail/patch_edge_sums.hpp>
+#include <spinslide/values/detail/patch_multipole.hpp>
+#include <spinslide/values/polygon_patch.hpp>
+
+#include <boost/math/policies/policy.hpp>
+#include <boost/math/special_functions/hypot.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace spinslide {
+
+/// A planar twist: the velocity of the patch origin and the spin (rad per
+/// unit time, counter-clockwise positive): planar_twist<double>{{vx, vy}, omega}.
+template <class Real>
+struct planar_twist {
+  using value_type = Real;       ///< the floating type
+  std::array<Real, 2> velocity;  ///< v of the patch origin
+  Real omega;                    ///< ω
+};
+
+/// A friction wrench per unit μN: the force and the torque about the patch
+/// origin (in the vertices' length unit).
+template <class Real>
+struct planar_wrench {
+  using value_type = Real;    ///< the floating type
+  std::array<Real, 2> force;  ///< F per μN
+  Real torque;                ///< τ per μN, about the origin
+};
+
+namespace detail {
+
+/// The twist after its checks; `valid` false once the policy returned NaN.
+template <class Real, class Policy>
+bool check_twist(const char* function, const planar_twist<Real>& w, Real& bad, const Policy& pol) {
+  if (!check(function, "twist.velocity[0]", w.velocity[0], argument_rule::finite, &bad, pol) ||
+      !check(function, "twist.velocity[1]", w.velocity[1], argument_rule::finite, &bad, pol) ||
+      !check(function, "twist.omega", w.omega, argument_rule::finite, &bad, pol))
+    return false;
+  if (w.velocity[0] == 0 && w.velocity[1] == 0 && w.omega == 0) {
+    bad = raise_argument_error(function, "twist.omega",
+                               "non-zero when the velocity is zero (a zero twist has no friction "
+                               "direction)",
+                               w.omega, pol);
+    return false;
+  }
+  return true;
+}
+
+template <class Real>
+Real fabs_real(Real x) {
+  return x < 0 ? Real(-x) : x;
+}
+
+/// Point friction at x: −û(x), and 0 where x does not slip (the pivot).
+template <class Real>
+planar_wrench<Real> point_wrench(const point2<Real>& x, const planar_twist<Real>& w) {
+  const point2<Real> u{w.velocity[0] - w.omega * x[1], w.velocity[1] + w.omega * x[0]};
+  const Real speed = boost::math::hypot(u[0], u[1]);
+  if (!(speed > 0)) return {{Real(0), Real(0)}, Real(0)};
+  const point2<Real> f{-u[0] / speed, -u[1] / speed};
+  return {f, cross(x, f)};
+}
+
+/// The edge sums about the instantaneous centre c: F = −sign(ω) ẑ × G,
+/// τ = −sign(ω)(H + c·G) (docs/patches.md, "The wrench").
+template <class Real>
+planar_wrench<Real> near_wrench(const polygon_patch<Real>& patch, const planar_twist<Real>& w,
+                                Real* dissipation = nullptr) {
+  const point2<Real> c{-w.velocity[1] / w.omega, w.velocity[0] / w.omega};
+  const auto& z0 = patch.pressure_origin();
+  const Real alpha = patch.pressure_at_origin() - dot(patch.pressure_gradient(), z0);
+  const auto& loaded = patch.loaded_vertices();
+  const centre_integrals<Real> I =
+      patch.shape() == patch_shape::area
+          ? polygon_centre_integrals(loaded, alpha, patch.pressure_gradient(), c)
+          : segment_centre_integrals(loaded[0], loaded[1], alpha, patch.pressure_gradient(), c);
+  const Real s = w.omega > 0 ? Real(1) : Real(-1);
+  if (dissipation) *dissipation = fabs_real(w.omega) * I.H;
+  return {{s * I.G[1], -s * I.G[0]}, -s * (I.H + dot(c, I.G))};
+}
+
+/// The multipole expansion about z₀ in the frame scaled by ρ₀: F = −i q̂ S,
+/// τ = −ρ₀ Re(q̂ T) + z₀ × F (docs/patches.md, "Far centres").
+template <class Real>
+planar_wrench<Real> far_wrench(const polygon_patch<Real>& patch, const planar_twist<Real>& w,
+                               const cplx<Real>& q, Real q_norm, Real* dissipation = nullptr) {
+  const auto& z0 = patch.pressure_origin();
+  const Real rho0 = patch.loaded_radius();
+  const Real ratio = w.omega == 0 ? std::numeric_limits<Real>::infinity()
+                                  : Real(q_norm / (fabs_real(w.omega) * rho0));
+  const multipole_series<Real> series(multipole_order(ratio));
+  // W = ωρ₀/q = ωρ₀ q̄/|q|², computed from q̂ (no overflow of |q|²).
+  const cplx<Real> qhat{q.re / q_norm, q.im / q_norm};
+  const Real wr = w.omega * rho0 / q_norm;
+  const auto& beta = patch.pressure_gradient();
+  // An area's pressure scales with ρ₀², a segment's line density with ρ₀.
+  const Real r2 = patch.shape() == patch_shape::area ? Real(rho0 * rho0) : rho0;
+  const multipole_frame<Real> f{patch.pressure_at_origin() * r2,
+                                {beta[0] * r2 * rho0, beta[1] * r2 * rho0},
+                                {wr * qhat.re, -wr * qhat.im}};
+  const auto& loaded = patch.loaded_vertices();
+  vertex_list<Real> scaled;
+  for (const auto& v : loaded) scaled.push_back({(v[0] - z0[0]) / rho0, (v[1] - z0[1]) / rho0});
+  const multipole_sums<Real> m =
+      patch.shape() == patch_shape::area
+          ? polygon_multipole(scaled, f, series, dissipation != nullptr)
+          : segment_multipole(scaled[0], scaled[1], f, series, dissipation != nullptr);
+  if (dissipation) *dissipation = q_norm * m.SD.re;
+  const cplx<Real> qs = qhat * m.S, qt = qhat * m.T;
+  const point2<Real> F{qs.im, -qs.re};
+  return {F, -rho0 * qt.re + cross(z0, F)};
+}
+
+/// The wrench of a checked twist.
+template <class Real>
+planar_wrench<Real> wrench_of(const polygon_patch<Real>& patch, const planar_twist<Real>& w,
+                              Real* dissipation = nullptr) {
+  if (patch.shape() == patch_shape::point) {
+    const auto& x = patch.pressure_origin();
+    if (dissipation)
+      *dissipation =
+          boost::math::hypot(w.velocity[0] - w.omega * x[1], w.velocity[1] + w.omega * x[0]);
+    return point_wrench(x, w);
+  }
+  const auto& z0 = patch.pressure_origin();
+  // q = ω z₀ − i v: the centre is c = z₀ − q/ω, at R = |q|/(|ω|ρ₀) loaded radii.
+  const cplx<Real> q{w.omega * z0[0] + w.velocity[1], w.omega * z0[1] - w.velocity[0]};
+  const Real q_norm = boost::math::hypot(q.re, q.im);
+  if (q_norm >= multipole_crossover<Real>() * fabs_real(w.omega) * patch.loaded_radius())
+    return far_wrench(patch, w, q, q_norm, dissipation);
+  return near_wrench(patch, w, dissipation);
+}
+
+}  // namespace detail
+
+/// The friction wrench of `patch` moving with the twist `w`, per unit μN:
+/// w.force (F_x, F_y) and w.torque about the patch origin.  A non-finite
+/// component or a zero twist (v = 0 and ω = 0) is a domain error through
+/// `pol` (NaN components unless it throws).
+template <class Real, class Policy = boost::math::policies::policy<>>
+planar_wrench<Real> friction_wrench(const polygon_patch<Real>& patch, const planar_twist<Real>& w,
+                                    const Policy& pol = Policy()) {
+  static const char* function = "spinslide::friction_wrench<%1%>(polygon_patch, planar_twist)";
+  Real bad = 0;
+  if (!detail::check_twist(function, w, bad, pol)) return {{bad, bad}, bad};
+  return detail::wrench_of(patch, w);
+}
+
+/// The dissipation D(w) = ∬ p |u| dA of `patch` per unit μN (the friction
+/// power per μN, in the vertices' length unit per unit time) and its
+/// gradient with respect to (v_x, v_y, ω), which is minus the wrench:
+/// ∇D = −(F_x, F_y, τ) (docs/patches.md, "Dissipation").
+template <class Real>
+struct patch_dissipation {
+  using value_type = Real;       ///< the floating type
+  Real value;                    ///< D
+  std::array<Real, 3> gradient;  ///< ∂D/∂(v_x, v_y, ω) = −(F_x, F_y, τ)
+};
+
+/// D and ∇D of `patch` at the twist `w`; the checks of friction_wrench.
+template <class Real, class Policy = boost::math::policies::policy<>>
+patch_dissipation<Real> friction_dissipation(const polygon_patch<Real>& patch,
+                                             const planar_twist<Real>& w,
+                                             const Policy& pol = Policy()) {
+  static const char* function = "spinslide::friction_dissipation<%1%>(polygon_patch, planar_twist)";
+  Real bad = 0;
+  if (!detail::check_twist(function, w, bad, pol)) return {bad, {bad, bad, bad}};
+  Real value = 0;
+  const planar_wrench<Real> f = detail::wrench_of(patch, w, &value);
+  return {value, {-f.force[0], -f.force[1], -f.torque}};
+}
+
+}  // namespace spinslide
+
+#endif  // SPINSLIDE_VALUES_FRICTION_WRENCH_HPP
