@@ -17,6 +17,7 @@
 #include <spinslide/values/cylinder.hpp>
 #include <spinslide/values/disk.hpp>
 #include <spinslide/values/friction_wrench.hpp>
+#include <spinslide/values/patch_dissipation.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
 #include <boost/math/constants/constants.hpp>

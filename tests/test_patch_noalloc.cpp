@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <spinslide/values/friction_wrench.hpp>
+#include <spinslide/values/patch_dissipation.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
 #include <array>

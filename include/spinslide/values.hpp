@@ -20,6 +20,7 @@
 #include <spinslide/values/erased_profile.hpp>
 #include <spinslide/values/force_torque_result.hpp>
 #include <spinslide/values/friction_wrench.hpp>
+#include <spinslide/values/patch_dissipation.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 #include <spinslide/values/profile.hpp>
 #include <spinslide/values/profile_base.hpp>

@@ -101,22 +101,22 @@ std::array<big, 3> residual(const std::vector<pt>& poly, const pt& e, const std:
 }
 
 bool solve3(std::array<std::array<big, 3>, 3> m, std::array<big, 3> b, std::array<big, 3>& x) {
-  for (int c = 0; c < 3; ++c) {
-    int piv = c;
-    for (int r = c + 1; r < 3; ++r)
+  for (std::size_t c = 0; c < 3; ++c) {
+    std::size_t piv = c;
+    for (std::size_t r = c + 1; r < 3; ++r)
       if (abs(m[r][c]) > abs(m[piv][c])) piv = r;
     std::swap(m[c], m[piv]);
     std::swap(b[c], b[piv]);
     if (m[c][c] == 0) return false;
-    for (int r = c + 1; r < 3; ++r) {
+    for (std::size_t r = c + 1; r < 3; ++r) {
       const big f = m[r][c] / m[c][c];
-      for (int k = c; k < 3; ++k) m[r][k] -= f * m[c][k];
+      for (std::size_t k = c; k < 3; ++k) m[r][k] -= f * m[c][k];
       b[r] -= f * b[c];
     }
   }
-  for (int c = 2; c >= 0; --c) {
+  for (std::size_t c = 3; c-- > 0;) {
     big s = b[c];
-    for (int k = c + 1; k < 3; ++k) s -= m[c][k] * x[k];
+    for (std::size_t k = c + 1; k < 3; ++k) s -= m[c][k] * x[k];
     x[c] = s / m[c][c];
   }
   return true;
@@ -131,12 +131,12 @@ pressure solve_pressure(const std::vector<pt>& poly, const pt& e) {
     if (abs(r[0]) + abs(r[1]) + abs(r[2]) < big(1e-46)) break;
     std::array<std::array<big, 3>, 3> jac;
     const big h = big(1e-22) * (abs(t[0]) + abs(t[1]) + abs(t[2]));
-    for (int k = 0; k < 3; ++k) {
+    for (std::size_t k = 0; k < 3; ++k) {
       auto tp = t, tm = t;
       tp[k] += h;
       tm[k] -= h;
       const auto rp = residual(poly, e, tp), rm = residual(poly, e, tm);
-      for (int i = 0; i < 3; ++i) jac[i][k] = (rp[i] - rm[i]) / (2 * h);
+      for (std::size_t i = 0; i < 3; ++i) jac[i][k] = (rp[i] - rm[i]) / (2 * h);
     }
     std::array<big, 3> step{};
     if (!solve3(jac, {-r[0], -r[1], -r[2]}, step)) break;

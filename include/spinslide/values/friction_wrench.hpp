@@ -144,6 +144,14 @@ planar_wrench<Real> wrench_of(const polygon_patch<Real>& patch, const planar_twi
           boost::math::hypot(w.velocity[0] - w.omega * x[1], w.velocity[1] + w.omega * x[0]);
     return point_wrench(x, w);
   }
+  // ω = 0: û = v̂ everywhere, F = −v̂ and τ = −e × v̂, e the centre of pressure
+  // (docs/patches.md, "The wrench": the expansion's first terms, exactly).
+  if (w.omega == 0) {
+    const Real speed = boost::math::hypot(w.velocity[0], w.velocity[1]);
+    const point2<Real> f{-w.velocity[0] / speed, -w.velocity[1] / speed};
+    if (dissipation) *dissipation = speed;
+    return {f, cross(patch.centre(), f)};
+  }
   const auto& z0 = patch.pressure_origin();
   // q = ω z₀ − i v: the centre is c = z₀ − q/ω, at R = |q|/(|ω|ρ₀) loaded radii.
   const cplx<Real> q{w.omega * z0[0] + w.velocity[1], w.omega * z0[1] - w.velocity[0]};
@@ -166,30 +174,6 @@ planar_wrench<Real> friction_wrench(const polygon_patch<Real>& patch, const plan
   Real bad = 0;
   if (!detail::check_twist(function, w, bad, pol)) return {{bad, bad}, bad};
   return detail::wrench_of(patch, w);
-}
-
-/// The dissipation D(w) = ∬ p |u| dA of `patch` per unit μN (the friction
-/// power per μN, in the vertices' length unit per unit time) and its
-/// gradient with respect to (v_x, v_y, ω), which is minus the wrench:
-/// ∇D = −(F_x, F_y, τ) (docs/patches.md, "Dissipation").
-template <class Real>
-struct patch_dissipation {
-  using value_type = Real;       ///< the floating type
-  Real value;                    ///< D
-  std::array<Real, 3> gradient;  ///< ∂D/∂(v_x, v_y, ω) = −(F_x, F_y, τ)
-};
-
-/// D and ∇D of `patch` at the twist `w`; the checks of friction_wrench.
-template <class Real, class Policy = boost::math::policies::policy<>>
-patch_dissipation<Real> friction_dissipation(const polygon_patch<Real>& patch,
-                                             const planar_twist<Real>& w,
-                                             const Policy& pol = Policy()) {
-  static const char* function = "spinslide::friction_dissipation<%1%>(polygon_patch, planar_twist)";
-  Real bad = 0;
-  if (!detail::check_twist(function, w, bad, pol)) return {bad, {bad, bad, bad}};
-  Real value = 0;
-  const planar_wrench<Real> f = detail::wrench_of(patch, w, &value);
-  return {value, {-f.force[0], -f.force[1], -f.torque}};
 }
 
 }  // namespace spinslide

@@ -47,6 +47,8 @@ struct edge_terms {
   Real D1;            ///< ∫s/ρ ds = ρ₁ − ρ₀
   Real D2;            ///< ∫s²/ρ ds = ½[sρ]₀¹ − ½h²Λ
   Real hL;            ///< hΛ (0 for h = 0: the segment passes through c)
+  Real rho0, rho1;    ///< |r| at the ends
+  Real s0, s1;        ///< s at the ends
 };
 
 /// Λ = asinh(s₁/|h|) − asinh(s₀/|h|) without cancellation: with s₀, s₁ of
@@ -55,8 +57,11 @@ struct edge_terms {
 template <class Real>
 Real asinh_difference(Real s0, Real s1, Real rho0, Real rho1, Real h, Real length) {
   BOOST_MATH_STD_USING
-  if (s0 * s1 <= 0) return boost::math::asinh(s1 / fabs(h)) - boost::math::asinh(s0 / fabs(h));
-  return boost::math::asinh(length * (s0 + s1) / (s1 * rho0 + s0 * rho1));
+  // The standard library's asinh for the built-in types (Boost's, with its
+  // policy checks, cost the near sums 3x); multiprecision types find theirs by ADL.
+  using std::asinh;
+  if (s0 * s1 <= 0) return asinh(s1 / fabs(h)) - asinh(s0 / fabs(h));
+  return asinh(length * (s0 + s1) / (s1 * rho0 + s0 * rho1));
 }
 
 template <class Real>
@@ -64,13 +69,14 @@ edge_terms<Real> edge_integrals(const point2<Real>& a, const point2<Real>& b) {
   BOOST_MATH_STD_USING
   edge_terms<Real> e{};
   const point2<Real> d = minus(b, a);
-  const Real L = boost::math::hypot(d[0], d[1]);
+  // sqrt(x² + y²), not hypot: the near sums see lengths of the patch's size.
+  const Real L = sqrt(d[0] * d[0] + d[1] * d[1]);
   if (!(L > 0)) return e;  // a repeated vertex (a clip through a vertex): no edge
   e.t = {d[0] / L, d[1] / L};
   e.n = {e.t[1], -e.t[0]};
   e.h = dot(a, e.n);
   const Real s0 = dot(a, e.t), s1 = dot(b, e.t);
-  const Real rho0 = boost::math::hypot(a[0], a[1]), rho1 = boost::math::hypot(b[0], b[1]);
+  const Real rho0 = sqrt(a[0] * a[0] + a[1] * a[1]), rho1 = sqrt(b[0] * b[0] + b[1] * b[1]);
   const Real h2 = e.h * e.h;
   const Real lambda = e.h == 0 ? Real(0) : asinh_difference(s0, s1, rho0, rho1, e.h, L);
   const Real srho = s1 * rho1 - s0 * rho0;
@@ -82,6 +88,10 @@ edge_terms<Real> edge_integrals(const point2<Real>& a, const point2<Real>& b) {
   e.J3 = (s1 * rho1 * rho1 * rho1 - s0 * rho0 * rho0 * rho0 + 3 * h2 * e.K) / 4;
   e.D2 = (srho - h2 * lambda) / 2;
   e.hL = e.h * lambda;
+  e.rho0 = rho0;
+  e.rho1 = rho1;
+  e.s0 = s0;
+  e.s1 = s1;
   return e;
 }
 

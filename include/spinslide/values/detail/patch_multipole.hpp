@@ -90,11 +90,14 @@ void gauss_nodes(F& f) {
   }
 }
 
-/// The smallest of Boost's rules (tabulated up to 30 points; the wider ones,
-/// for types beyond long double, computed once on first use) with at least
-/// `needed` points.
+/// The smallest of Boost's rules (tabulated for 7 to 30 points; the others,
+/// the 3 to 5 of far centres and the wide ones of types beyond long double,
+/// computed once on first use) with at least `needed` points.
 template <class Real, class F>
 void with_gauss_rule(std::size_t needed, F& f) {
+  if (needed <= 3) return gauss_nodes<Real, 3>(f);
+  if (needed <= 4) return gauss_nodes<Real, 4>(f);
+  if (needed <= 5) return gauss_nodes<Real, 5>(f);
   if (needed <= 7) return gauss_nodes<Real, 7>(f);
   if (needed <= 10) return gauss_nodes<Real, 10>(f);
   if (needed <= 15) return gauss_nodes<Real, 15>(f);
