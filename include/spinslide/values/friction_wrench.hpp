@@ -19,6 +19,7 @@
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/values/detail/patch_edge_sums.hpp>
 #include <spinslide/values/detail/patch_multipole.hpp>
+#include <spinslide/values/detail/patch_slabs.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
 #include <boost/math/policies/policy.hpp>
@@ -83,19 +84,27 @@ planar_wrench<Real> point_wrench(const point2<Real>& x, const planar_twist<Real>
   return {f, cross(x, f)};
 }
 
+/// What the wrench needs of a loaded region: its vertices (an area, or a
+/// segment's two ends), its pressure p₀ + β·(x − z₀) and ρ₀ about z₀.
+template <class Real, std::size_t N>
+struct loaded_region {
+  const vertex_list<Real, N>& vertices;
+  bool area;
+  point2<Real> z0;
+  Real rho0, p0;
+  point2<Real> beta;
+};
+
 /// The edge sums about the instantaneous centre c: F = −sign(ω) ẑ × G,
 /// τ = −sign(ω)(H + c·G) (docs/patches.md, "The wrench").
-template <class Real>
-planar_wrench<Real> near_wrench(const polygon_patch<Real>& patch, const planar_twist<Real>& w,
-                                Real* dissipation = nullptr) {
+template <class Real, std::size_t N>
+planar_wrench<Real> near_wrench(const loaded_region<Real, N>& r, const planar_twist<Real>& w,
+                                Real* dissipation) {
   const point2<Real> c{-w.velocity[1] / w.omega, w.velocity[0] / w.omega};
-  const auto& z0 = patch.pressure_origin();
-  const Real alpha = patch.pressure_at_origin() - dot(patch.pressure_gradient(), z0);
-  const auto& loaded = patch.loaded_vertices();
+  const Real alpha = r.p0 - dot(r.beta, r.z0);
   const centre_integrals<Real> I =
-      patch.shape() == patch_shape::area
-          ? polygon_centre_integrals(loaded, alpha, patch.pressure_gradient(), c)
-          : segment_centre_integrals(loaded[0], loaded[1], alpha, patch.pressure_gradient(), c);
+      r.area ? polygon_centre_integrals(r.vertices, alpha, r.beta, c)
+             : segment_centre_integrals(r.vertices[0], r.vertices[1], alpha, r.beta, c);
   const Real s = w.omega > 0 ? Real(1) : Real(-1);
   if (dissipation) *dissipation = fabs_real(w.omega) * I.H;
   return {{s * I.G[1], -s * I.G[0]}, -s * (I.H + dot(c, I.G))};
@@ -103,34 +112,91 @@ planar_wrench<Real> near_wrench(const polygon_patch<Real>& patch, const planar_t
 
 /// The multipole expansion about z₀ in the frame scaled by ρ₀: F = −i q̂ S,
 /// τ = −ρ₀ Re(q̂ T) + z₀ × F (docs/patches.md, "Far centres").
-template <class Real>
-planar_wrench<Real> far_wrench(const polygon_patch<Real>& patch, const planar_twist<Real>& w,
-                               const cplx<Real>& q, Real q_norm, Real* dissipation = nullptr) {
-  const auto& z0 = patch.pressure_origin();
-  const Real rho0 = patch.loaded_radius();
-  const Real ratio = w.omega == 0 ? std::numeric_limits<Real>::infinity()
-                                  : Real(q_norm / (fabs_real(w.omega) * rho0));
-  const multipole_series<Real> series(multipole_order(ratio));
+template <class Real, std::size_t N>
+planar_wrench<Real> far_wrench(const loaded_region<Real, N>& r, const planar_twist<Real>& w,
+                               const cplx<Real>& q, Real q_norm, Real* dissipation) {
+  const Real rho0 = r.rho0;
+  const multipole_series<Real> series(multipole_order(Real(q_norm / (fabs_real(w.omega) * rho0))));
   // W = ωρ₀/q = ωρ₀ q̄/|q|², computed from q̂ (no overflow of |q|²).
   const cplx<Real> qhat{q.re / q_norm, q.im / q_norm};
   const Real wr = w.omega * rho0 / q_norm;
-  const auto& beta = patch.pressure_gradient();
   // An area's pressure scales with ρ₀², a segment's line density with ρ₀.
-  const Real r2 = patch.shape() == patch_shape::area ? Real(rho0 * rho0) : rho0;
-  const multipole_frame<Real> f{patch.pressure_at_origin() * r2,
-                                {beta[0] * r2 * rho0, beta[1] * r2 * rho0},
-                                {wr * qhat.re, -wr * qhat.im}};
-  const auto& loaded = patch.loaded_vertices();
-  vertex_list<Real> scaled;
-  for (const auto& v : loaded) scaled.push_back({(v[0] - z0[0]) / rho0, (v[1] - z0[1]) / rho0});
+  const Real r2 = r.area ? Real(rho0 * rho0) : rho0;
+  const multipole_frame<Real> f{
+      r.p0 * r2, {r.beta[0] * r2 * rho0, r.beta[1] * r2 * rho0}, {wr * qhat.re, -wr * qhat.im}};
+  vertex_list<Real, N> scaled;
+  for (const auto& v : r.vertices)
+    scaled.push_back({(v[0] - r.z0[0]) / rho0, (v[1] - r.z0[1]) / rho0});
   const multipole_sums<Real> m =
-      patch.shape() == patch_shape::area
-          ? polygon_multipole(scaled, f, series, dissipation != nullptr)
-          : segment_multipole(scaled[0], scaled[1], f, series, dissipation != nullptr);
+      r.area ? polygon_multipole(scaled, f, series, dissipation != nullptr)
+             : segment_multipole(scaled[0], scaled[1], f, series, dissipation != nullptr);
   if (dissipation) *dissipation = q_norm * m.SD.re;
   const cplx<Real> qs = qhat * m.S, qt = qhat * m.T;
   const point2<Real> F{qs.im, -qs.re};
-  return {F, -rho0 * qt.re + cross(z0, F)};
+  return {F, -rho0 * qt.re + cross(r.z0, F)};
+}
+
+/// One region's wrench, ω ≠ 0: the expansion beyond 4ρ₀, the edge sums within.
+template <class Real, std::size_t N>
+planar_wrench<Real> region_wrench(const loaded_region<Real, N>& r, const planar_twist<Real>& w,
+                                  Real* dissipation) {
+  // q = ω z₀ − i v: the centre is c = z₀ − q/ω, at R = |q|/(|ω|ρ₀) loaded radii.
+  const cplx<Real> q{w.omega * r.z0[0] + w.velocity[1], w.omega * r.z0[1] - w.velocity[0]};
+  const Real q_norm = boost::math::hypot(q.re, q.im);
+  if (q_norm >= multipole_crossover<Real>() * fabs_real(w.omega) * r.rho0)
+    return far_wrench(r, w, q, q_norm, dissipation);
+  return near_wrench(r, w, dissipation);
+}
+
+/// A thin area's wrench as the sum over its fat slabs (detail/patch_slabs.hpp).
+template <class Real, std::size_t N>
+planar_wrench<Real> slab_wrench(const loaded_region<Real, N>& whole, const slab_plan<Real>& plan,
+                                const planar_twist<Real>& w, Real* dissipation) {
+  BOOST_MATH_STD_USING
+  planar_wrench<Real> sum{{Real(0), Real(0)}, Real(0)};
+  Real total = 0;
+  vertex_list<Real, 12> scratch, piece;
+  for (std::size_t k = 0; k < plan.count; ++k) {
+    slab(whole.vertices, plan, k, scratch, piece);
+    if (piece.size() < 3) continue;
+    point2<Real> z{0, 0};
+    for (const auto& v : piece) {
+      z[0] += v[0] / Real(piece.size());
+      z[1] += v[1] / Real(piece.size());
+    }
+    Real rho = 0;
+    for (const auto& v : piece) rho = fmax(rho, sqrt(dot(minus(v, z), minus(v, z))));
+    const loaded_region<Real, 12> r{
+        piece, true, z, rho, whole.p0 + dot(whole.beta, minus(z, whole.z0)), whole.beta};
+    Real d = 0;
+    const planar_wrench<Real> f = region_wrench(r, w, dissipation ? &d : nullptr);
+    sum.force[0] += f.force[0];
+    sum.force[1] += f.force[1];
+    sum.torque += f.torque;
+    total += d;
+  }
+  if (dissipation) *dissipation = total;
+  return sum;
+}
+
+/// The wrench of an area or a line patch in the working type W (double for
+/// float), ω ≠ 0: a thin area by slabs.
+template <class W, class Real>
+planar_wrench<W> working_wrench(const polygon_patch<Real>& p, const planar_twist<W>& w,
+                                W* dissipation) {
+  vertex_list<W> vertices;
+  for (const auto& v : p.loaded_vertices()) vertices.push_back({W(v[0]), W(v[1])});
+  const loaded_region<W, 9> r{vertices,
+                              p.shape() == patch_shape::area,
+                              {W(p.pressure_origin()[0]), W(p.pressure_origin()[1])},
+                              W(p.loaded_radius()),
+                              W(p.pressure_at_origin()),
+                              {W(p.pressure_gradient()[0]), W(p.pressure_gradient()[1])}};
+  if (r.area) {
+    const slab_plan<W> plan = plan_slabs(vertices);
+    if (plan.count > 1) return slab_wrench(r, plan, w, dissipation);
+  }
+  return region_wrench(r, w, dissipation);
 }
 
 /// The wrench of a checked twist.
@@ -152,13 +218,13 @@ planar_wrench<Real> wrench_of(const polygon_patch<Real>& patch, const planar_twi
     if (dissipation) *dissipation = speed;
     return {f, cross(patch.centre(), f)};
   }
-  const auto& z0 = patch.pressure_origin();
-  // q = ω z₀ − i v: the centre is c = z₀ − q/ω, at R = |q|/(|ω|ρ₀) loaded radii.
-  const cplx<Real> q{w.omega * z0[0] + w.velocity[1], w.omega * z0[1] - w.velocity[0]};
-  const Real q_norm = boost::math::hypot(q.re, q.im);
-  if (q_norm >= multipole_crossover<Real>() * fabs_real(w.omega) * patch.loaded_radius())
-    return far_wrench(patch, w, q, q_norm, dissipation);
-  return near_wrench(patch, w, dissipation);
+  using W = working_type<Real>;
+  W d = 0;
+  const planar_wrench<W> f =
+      working_wrench(patch, planar_twist<W>{{W(w.velocity[0]), W(w.velocity[1])}, W(w.omega)},
+                     dissipation ? &d : nullptr);
+  if (dissipation) *dissipation = Real(d);
+  return {{Real(f.force[0]), Real(f.force[1])}, Real(f.torque)};
 }
 
 }  // namespace detail

@@ -60,6 +60,8 @@ class polygon_patch {
   using value_type = Real;                        ///< the floating type
   using vertex = std::array<Real, 2>;             ///< a point of the plane
   using vertex_list = detail::vertex_list<Real>;  ///< inline storage for 9 vertices
+  /// The type the pressure is solved in (and the wrench computed in): double for float.
+  using working = detail::working_type<Real>;
 
   /// A convex polygon under uniform pressure.
   template <class Range>
@@ -145,7 +147,7 @@ class polygon_patch {
   /// size) loads a line patch: closer in, the no-tension region is a sliver
   /// whose moments (and Newton's solve on them) lose ~ε·size/distance, and
   /// whose edge sums lose as much to the pressure's steep gradient.
-  static Real boundary_band() { return 64 * boost::math::tools::root_epsilon<Real>(); }
+  static Real boundary_band() { return 64 * boost::math::tools::root_epsilon<working>(); }
 
   static void check_finite(const char* function, const vertex& x) {
     detail::checked_constructor_argument(function, "vertex x", x[0], detail::argument_rule::finite);
@@ -175,31 +177,32 @@ class polygon_patch {
   /// The polygon's linear or no-tension pressure, solved in the frame
   /// y = (x − g)/scale (detail/patch_pressure.hpp), and back.
   void set_area(const detail::patch_outline<Real>& o, const vertex* centre) {
-    const Real scale = o.scale;
-    vertex_list y;
+    using W = working;
+    using wvertex = detail::point2<W>;
+    const W scale = W(o.scale);
+    detail::vertex_list<W> y;
     for (const auto& v : o.poly)
-      y.push_back({(v[0] - o.mean[0]) / scale, (v[1] - o.mean[1]) / scale});
-    const auto m = detail::polygon_moments(y, vertex{});
-    const vertex yc{m.first[0] / m.area, m.first[1] / m.area};
-    const vertex e =
-        centre ? vertex{((*centre)[0] - o.mean[0]) / scale, ((*centre)[1] - o.mean[1]) / scale}
-               : yc;
+      y.push_back({(W(v[0]) - W(o.mean[0])) / scale, (W(v[1]) - W(o.mean[1])) / scale});
+    const auto m = detail::polygon_moments(y, wvertex{});
+    const wvertex e = centre ? wvertex{(W((*centre)[0]) - W(o.mean[0])) / scale,
+                                       (W((*centre)[1]) - W(o.mean[1])) / scale}
+                             : wvertex{m.first[0] / m.area, m.first[1] / m.area};
     const auto lp = detail::patch_pressure(y, e);
     shape_ = patch_shape::area;
     loaded_.clear();
     if (lp.lifted) {
       for (const auto& v : lp.loaded)
-        loaded_.push_back({o.mean[0] + scale * v[0], o.mean[1] + scale * v[1]});
+        loaded_.push_back({Real(W(o.mean[0]) + scale * v[0]), Real(W(o.mean[1]) + scale * v[1])});
     } else {
       loaded_ = o.poly;
     }
     finish_loaded();
-    const vertex z{(z0_[0] - o.mean[0]) / scale, (z0_[1] - o.mean[1]) / scale};
-    const Real s2 = scale * scale;
-    p0_ = (lp.alpha + detail::dot(lp.beta, z)) / s2;
-    beta_ = {lp.beta[0] / (s2 * scale), lp.beta[1] / (s2 * scale)};
-    centre_ = {o.mean[0] + scale * e[0], o.mean[1] + scale * e[1]};
-    if (centre) centre_ = *centre;
+    const wvertex z{(W(z0_[0]) - W(o.mean[0])) / scale, (W(z0_[1]) - W(o.mean[1])) / scale};
+    const W s2 = scale * scale;
+    p0_ = Real((lp.alpha + detail::dot(lp.beta, z)) / s2);
+    beta_ = {Real(lp.beta[0] / (s2 * scale)), Real(lp.beta[1] / (s2 * scale))};
+    centre_ = centre ? *centre
+                     : vertex{Real(W(o.mean[0]) + scale * e[0]), Real(W(o.mean[1]) + scale * e[1])};
   }
 
   /// The line patch on the segment a→b with its centre at a + along·(b − a):

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace spinslide {
@@ -21,6 +22,13 @@ namespace detail {
 
 template <class Real>
 using point2 = std::array<Real, 2>;
+
+/// The type a patch is solved and evaluated in: double for float (the
+/// no-tension solve and the edge sums lose up to the patch's aspect ratio
+/// times (distance/size)² ulps; in float that is too much, in double free),
+/// Real otherwise.
+template <class Real>
+using working_type = std::conditional_t<std::is_same<Real, float>::value, double, Real>;
 
 template <class Real>
 point2<Real> minus(const point2<Real>& a, const point2<Real>& b) {
@@ -109,9 +117,9 @@ area_moments<Real> polygon_moments(const vertex_list<Real, N>& poly, const point
 
 /// The part of the convex polygon `poly` where α + β·(x − g) ≥ 0
 /// (Sutherland–Hodgman for one half-plane), into `out`.
-template <class Real, std::size_t N>
+template <class Real, std::size_t N, std::size_t M>
 void clip_polygon(const vertex_list<Real, N>& poly, const point2<Real>& g, Real alpha,
-                  const point2<Real>& beta, vertex_list<Real, N>& out) {
+                  const point2<Real>& beta, vertex_list<Real, M>& out) {
   out.clear();
   const std::size_t n = poly.size();
   auto f = [&](std::size_t i) { return alpha + dot(beta, minus(poly[i], g)); };
