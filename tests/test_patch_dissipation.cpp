@@ -27,15 +27,8 @@ matrix wrench_differences(const polygon_patch<double>& p, const planar_twist<dou
   matrix m{};
   const double h = 1e-6;
   for (std::size_t k = 0; k < 3; ++k) {
-    planar_twist<double> plus = w, minus = w;
-    if (k < 2) {
-      plus.velocity[k] += h;
-      minus.velocity[k] -= h;
-    } else {
-      plus.omega += h;
-      minus.omega -= h;
-    }
-    const auto a = spinslide::friction_wrench(p, plus), b = spinslide::friction_wrench(p, minus);
+    const auto a = spinslide::friction_wrench(p, spinslide::detail::shifted_twist(w, k, h));
+    const auto b = spinslide::friction_wrench(p, spinslide::detail::shifted_twist(w, k, -h));
     m[0][k] = -(a.force[0] - b.force[0]) / (2 * h);
     m[1][k] = -(a.force[1] - b.force[1]) / (2 * h);
     m[2][k] = -(a.torque - b.torque) / (2 * h);

@@ -29,6 +29,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "patch_quadrature.hpp"
+
 namespace {
 
 using spinslide::centre_of_pressure;
@@ -38,6 +40,7 @@ using point = std::array<double, 2>;
 
 std::vector<point> regular_polygon(int n, double radius = 1) {
   std::vector<point> v;
+  v.reserve(static_cast<std::size_t>(n));
   const double pi = boost::math::constants::pi<double>();
   for (int k = 0; k < n; ++k)
     v.push_back({radius * std::cos(2 * pi * k / n), radius * std::sin(2 * pi * k / n)});
@@ -181,26 +184,10 @@ TEST(PatchLimits, MirroredTwistMirroredWrench) {
 // first vertex (the instantaneous centre is outside the patch here, so |u|
 // is analytic on it and 20 × 20 points per triangle are exact to rounding).
 double dissipation_quadrature(const polygon_patch<double>& p, const planar_twist<double>& w) {
-  using rule = boost::math::quadrature::gauss<double, 20>;
-  const auto& v = p.loaded_vertices();
-  double sum = 0;
-  for (std::size_t i = 1; i + 1 < v.size(); ++i) {
-    const point e1{v[i][0] - v[0][0], v[i][1] - v[0][1]},
-        e2{v[i + 1][0] - v[0][0], v[i + 1][1] - v[0][1]};
-    const double jac = e1[0] * e2[1] - e1[1] * e2[0];
-    sum += jac * rule::integrate([&](double a) {
-             const double u = (a + 1) / 2;
-             return rule::integrate([&](double b) {
-               const double t = (b + 1) / 2;
-               const point x{v[0][0] + u * (1 - t) * e1[0] + u * t * e2[0],
-                             v[0][1] + u * (1 - t) * e1[1] + u * t * e2[1]};
-               return p.pressure(x) *
-                      std::hypot(w.velocity[0] - w.omega * x[1], w.velocity[1] + w.omega * x[0]) *
-                      u / 4;
-             });
-           });
-  }
-  return sum;
+  return patch_quadrature::loaded_integral<20>(p, [&](const point& x) {
+    return p.pressure(x) *
+           std::hypot(w.velocity[0] - w.omega * x[1], w.velocity[1] + w.omega * x[0]);
+  });
 }
 
 TEST(PatchLimits, WrenchIsMinusTheGradientOfTheDissipation) {
@@ -219,15 +206,9 @@ TEST(PatchLimits, WrenchIsMinusTheGradientOfTheDissipation) {
       const double h = 1e-5;
       std::array<double, 3> fd{};
       for (std::size_t k = 0; k < 3; ++k) {
-        auto plus = w, minus = w;
-        if (k < 2) {
-          plus.velocity[k] += h;
-          minus.velocity[k] -= h;
-        } else {
-          plus.omega += h;
-          minus.omega -= h;
-        }
-        fd[k] = (dissipation_quadrature(*p, plus) - dissipation_quadrature(*p, minus)) / (2 * h);
+        fd[k] = (dissipation_quadrature(*p, spinslide::detail::shifted_twist(w, k, h)) -
+                 dissipation_quadrature(*p, spinslide::detail::shifted_twist(w, k, -h))) /
+                (2 * h);
       }
       EXPECT_NEAR(fd[0], -f.force[0], 1e-8);
       EXPECT_NEAR(fd[1], -f.force[1], 1e-8);

@@ -13,13 +13,13 @@
 #include <spinslide/values/friction_wrench.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
-#include <boost/math/quadrature/gauss.hpp>
-
 #include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "patch_quadrature.hpp"
 
 namespace {
 
@@ -86,29 +86,11 @@ TEST(PolygonPatchErrors, ZeroOrNonFiniteTwistIsAPolicyError) {
   EXPECT_TRUE(std::isnan(w.force[0]) && std::isnan(w.force[1]) && std::isnan(w.torque));
 }
 
-// ∬ f over the loaded polygon: triangles fanned from its first vertex, the
-// square mapped onto each (Duffy), 10 × 10 Gauss points (exact for the
-// quadratics tested here).
+// ∬ f over the loaded polygon: 10 × 10 Gauss points per triangle, exact for
+// the quadratics tested here.
 template <class F>
 double loaded_integral(const polygon_patch<double>& p, F f) {
-  using rule = boost::math::quadrature::gauss<double, 10>;
-  const auto& v = p.loaded_vertices();
-  double sum = 0;
-  for (std::size_t i = 1; i + 1 < v.size(); ++i) {
-    const point e1{v[i][0] - v[0][0], v[i][1] - v[0][1]};
-    const point e2{v[i + 1][0] - v[0][0], v[i + 1][1] - v[0][1]};
-    const double jac = e1[0] * e2[1] - e1[1] * e2[0];
-    sum += jac * rule::integrate([&](double a) {
-             const double u = (a + 1) / 2;
-             return rule::integrate([&](double b) {
-               const double w = (b + 1) / 2;
-               const point x{v[0][0] + u * (1 - w) * e1[0] + u * w * e2[0],
-                             v[0][1] + u * (1 - w) * e1[1] + u * w * e2[1]};
-               return f(x) * u / 4;
-             });
-           });
-  }
-  return sum;
+  return patch_quadrature::loaded_integral<10>(p, f);
 }
 
 // The three pressures reproduce their resultant and centre; the no-tension

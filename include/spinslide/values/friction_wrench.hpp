@@ -69,6 +69,18 @@ bool check_twist(const char* function, const planar_twist<Real>& w, Real& bad, c
   return true;
 }
 
+/// `w` with its component k (v_x, v_y, ω) moved by `step` (the differences
+/// of the far Hessian, and the tests').
+template <class Real>
+planar_twist<Real> shifted_twist(planar_twist<Real> w, std::size_t k, Real step) {
+  if (k < 2) {
+    w.velocity[k] += step;
+  } else {
+    w.omega += step;
+  }
+  return w;
+}
+
 template <class Real>
 Real fabs_real(Real x) {
   return x < 0 ? Real(-x) : x;

@@ -106,16 +106,9 @@ matrix3<Real> far_hessian(const polygon_patch<Real>& p, const planar_twist<Real>
   const Real h = boost::math::tools::cbrt_epsilon<Real>() * scale;
   matrix3<Real> m{};
   for (std::size_t k = 0; k < 3; ++k) {
-    planar_twist<Real> plus = w, minus = w;
     const Real step = k < 2 ? h : Real(h / size);
-    if (k < 2) {
-      plus.velocity[k] += step;
-      minus.velocity[k] -= step;
-    } else {
-      plus.omega += step;
-      minus.omega -= step;
-    }
-    const auto a = wrench_of(p, plus), b = wrench_of(p, minus);
+    const auto a = wrench_of(p, shifted_twist(w, k, step)),
+               b = wrench_of(p, shifted_twist(w, k, Real(-step)));
     m[0][k] = -(a.force[0] - b.force[0]) / (2 * step);
     m[1][k] = -(a.force[1] - b.force[1]) / (2 * step);
     m[2][k] = -(a.torque - b.torque) / (2 * step);

@@ -99,7 +99,7 @@ void check_convex(const char* function, const patch_outline<Real>& o) {
                                   ">= 0 (a convex outline)", turn);
     turning += atan2(cross(a, b), dot(a, b));
   }
-  const Real two_pi = boost::math::constants::two_pi<Real>();
+  const Real two_pi = 2 * boost::math::constants::pi<Real>();
   if (!(fabs(turning - two_pi) < Real(1e-3)))
     refuse_constructor_argument(function, "the outline's total turning / (2 pi)",
                                 "1 (a convex outline, once around)", Real(turning / two_pi));
