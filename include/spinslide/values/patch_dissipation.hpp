@@ -41,18 +41,18 @@ struct patch_dissipation {
 namespace detail {
 
 template <class Real>
-using matrix3 = std::array<std::array<Real, 3>, 3>;
+using patch_matrix = std::array<std::array<Real, 3>, 3>;
 
 template <class Real>
-matrix3<Real> infinite_hessian() {
+patch_matrix<Real> infinite_hessian() {
   const Real inf = std::numeric_limits<Real>::infinity();
   return {{{inf, inf, inf}, {inf, inf, inf}, {inf, inf, inf}}};
 }
 
 /// a aᵀ·scale.
 template <class Real>
-matrix3<Real> outer(const std::array<Real, 3>& a, Real scale) {
-  matrix3<Real> m{};
+patch_matrix<Real> outer(const std::array<Real, 3>& a, Real scale) {
+  patch_matrix<Real> m{};
   for (std::size_t i = 0; i < 3; ++i)
     for (std::size_t j = 0; j < 3; ++j) m[i][j] = scale * a[i] * a[j];
   return m;
@@ -84,7 +84,7 @@ sym2<Real> second_moment(const polygon_patch<Real>& p) {
 
 /// ω = 0: (1/|v|) ∬ p a aᵀ with a = (n̂, x·v̂), n̂ = ẑ × v̂.
 template <class Real>
-matrix3<Real> sliding_hessian(const polygon_patch<Real>& p, const planar_twist<Real>& w) {
+patch_matrix<Real> sliding_hessian(const polygon_patch<Real>& p, const planar_twist<Real>& w) {
   const Real speed = boost::math::hypot(w.velocity[0], w.velocity[1]);
   const point2<Real> vh{w.velocity[0] / speed, w.velocity[1] / speed}, nh{-vh[1], vh[0]};
   const sym2<Real> J = second_moment(p);
@@ -98,13 +98,13 @@ matrix3<Real> sliding_hessian(const polygon_patch<Real>& p, const planar_twist<R
 /// Far centres: central differences of the exact wrench (−∂(F, τ)/∂w), steps
 /// ∛ε of the twist's scale: about ε^{2/3} relative (docs/patches.md).
 template <class Real>
-matrix3<Real> far_hessian(const polygon_patch<Real>& p, const planar_twist<Real>& w) {
+patch_matrix<Real> far_hessian(const polygon_patch<Real>& p, const planar_twist<Real>& w) {
   BOOST_MATH_STD_USING
   const Real size =
       fmax(p.loaded_radius(), boost::math::hypot(p.pressure_origin()[0], p.pressure_origin()[1]));
   const Real scale = boost::math::hypot(w.velocity[0], w.velocity[1]) + fabs(w.omega) * size;
   const Real h = boost::math::tools::cbrt_epsilon<Real>() * scale;
-  matrix3<Real> m{};
+  patch_matrix<Real> m{};
   for (std::size_t k = 0; k < 3; ++k) {
     const Real step = k < 2 ? h : Real(h / size);
     const auto a = wrench_of(p, shifted_twist(w, k, step)),
@@ -120,7 +120,8 @@ matrix3<Real> far_hessian(const polygon_patch<Real>& p, const planar_twist<Real>
 
 /// ∇²D at a checked twist.
 template <class Real>
-matrix3<Real> dissipation_hessian(const polygon_patch<Real>& p, const planar_twist<Real>& w) {
+patch_matrix<Real> patch_dissipation_hessian(const polygon_patch<Real>& p,
+                                             const planar_twist<Real>& w) {
   BOOST_MATH_STD_USING
   if (p.shape() == patch_shape::point) {
     const auto& x = p.pressure_origin();
@@ -164,7 +165,8 @@ patch_dissipation<Real> friction_dissipation(const polygon_patch<Real>& patch,
     return {bad, {bad, bad, bad}, {{{bad, bad, bad}, {bad, bad, bad}, {bad, bad, bad}}}};
   Real value = 0;
   const planar_wrench<Real> f = detail::wrench_of(patch, w, &value);
-  return {value, {-f.force[0], -f.force[1], -f.torque}, detail::dissipation_hessian(patch, w)};
+  return {
+      value, {-f.force[0], -f.force[1], -f.torque}, detail::patch_dissipation_hessian(patch, w)};
 }
 
 }  // namespace spinslide
