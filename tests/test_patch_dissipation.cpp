@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace {
@@ -86,6 +87,63 @@ TEST(PatchDissipation, PivotingLinePatchHasInfiniteHessian) {
   const auto a = spinslide::friction_dissipation(area, planar_twist<double>{{0.0, 0.0}, 1.0});
   for (const auto& row : a.hessian)
     for (double x : row) EXPECT_TRUE(std::isfinite(x));
+}
+
+}  // namespace
+
+namespace {
+
+// Random convex patches (3 to 8 points on ellipses of aspect 1 to 100,
+// random centres of pressure inside) and random twists (centres from inside
+// to 1e8 sizes away, ω = 0 among them): the wrench is finite, |F| ≤ 1,
+// |τ| ≤ ℓ, and D is homogeneous of degree 1, so F·v + τω = −D (Euler).
+TEST(PatchDissipation, RandomPatchesObeyEuler) {
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> u(0, 1);
+  int checked = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const std::size_t n = 3 + static_cast<std::size_t>(u(rng) * 6);
+    // Points at increasing angles on an ellipse: convex.
+    std::vector<double> steps(n);
+    double total = 0;
+    for (auto& st : steps) total += st = 0.3 + u(rng);
+    std::vector<point> v;
+    double angle = 6.283185307179586 * u(rng);
+    const double cx = u(rng) - 0.5, cy = u(rng) - 0.5, stretch = std::pow(10.0, 2 * u(rng));
+    for (double st : steps) {
+      v.push_back({cx + stretch * 0.3 * std::cos(angle), cy + 0.3 * std::sin(angle)});
+      angle += st / total * 6.283185307179586;
+    }
+    // The centre of pressure: between the vertex mean and a vertex.
+    point m{0, 0};
+    for (const auto& x : v)
+      m = {m[0] + x[0] / static_cast<double>(n), m[1] + x[1] / static_cast<double>(n)};
+    const double t = 0.98 * u(rng);
+    const point e{m[0] + t * (v[0][0] - m[0]), m[1] + t * (v[0][1] - m[1])};
+    const polygon_patch<double> p(v, centre_of_pressure<double>{e});
+    double l = 0;
+    for (const auto& x : v) l = std::fmax(l, std::hypot(x[0], x[1]));
+    for (int k = 0; k < 5; ++k) {
+      const double r = std::pow(10.0, 8 * u(rng) - 2), a = 6.283185307179586 * u(rng);
+      const double omega = k == 0 ? 0.0 : (u(rng) < 0.5 ? -1.0 : 1.0) / std::fmax(1.0, r);
+      const point c{m[0] + r * std::cos(a), m[1] + r * std::sin(a)};
+      const planar_twist<double> w{
+          k == 0 ? point{std::cos(a), std::sin(a)} : point{omega * c[1], -omega * c[0]}, omega};
+      const auto f = spinslide::friction_wrench(p, w);
+      const auto d = spinslide::friction_dissipation(p, w);
+      ASSERT_TRUE(std::isfinite(f.force[0]) && std::isfinite(f.force[1]) &&
+                  std::isfinite(f.torque));
+      EXPECT_LE(std::hypot(f.force[0], f.force[1]) - 1, 1e-13)
+          << "trial " << trial << " k " << k << " n " << n << " stretch " << stretch;
+      EXPECT_LE(std::fabs(f.torque), l * (1 + 1e-14));
+      const double power =
+          f.force[0] * w.velocity[0] + f.force[1] * w.velocity[1] + f.torque * w.omega;
+      const double scale = std::hypot(w.velocity[0], w.velocity[1]) + std::fabs(w.omega) * l;
+      EXPECT_NEAR(power, -d.value, 1e-13 * scale) << "trial " << trial << " k " << k;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2000);
 }
 
 }  // namespace
