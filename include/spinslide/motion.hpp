@@ -5,7 +5,8 @@
 /// \file motion.hpp
 /// The motion: the equations of motion (odeint systems), the integration of a
 /// throw through its stop, the terminal ratio and regime, tabulated and batched
-/// throws (include/spinslide/motion/).  Includes the values it builds on.
+/// throws, a flat plate thrown to its stop (include/spinslide/motion/).
+/// Includes the values it builds on.
 
 #ifndef SPINSLIDE_MOTION_HPP
 #define SPINSLIDE_MOTION_HPP
@@ -14,6 +15,8 @@
 #include <spinslide/motion/dynamics.hpp>
 #include <spinslide/motion/equations_of_motion.hpp>
 #include <spinslide/motion/motion_types.hpp>
+#include <spinslide/motion/plate_motion.hpp>
+#include <spinslide/motion/plate_throw.hpp>
 #include <spinslide/motion/tabulated_throw.hpp>
 #include <spinslide/motion/terminal.hpp>
 #include <spinslide/motion/terminal_state.hpp>

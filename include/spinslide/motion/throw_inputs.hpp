@@ -46,6 +46,16 @@ struct initial_spin : named_input<initial_spin<Real>, Real> {
 template <class Real>
 initial_spin(Real) -> initial_spin<Real>;
 
+/// The radius of gyration k = √(I/m) of a thrown plate about its vertical
+/// axis through the centre of mass (a length in the patch's unit, > 0).
+template <class Real>
+struct gyration_radius : named_input<gyration_radius<Real>, Real> {
+  using named_input<gyration_radius<Real>, Real>::named_input;
+};
+/// gyration_radius{x} is a gyration_radius<double> for a double x.
+template <class Real>
+gyration_radius(Real) -> gyration_radius<Real>;
+
 }  // namespace spinslide
 
 #endif  // SPINSLIDE_MOTION_THROW_INPUTS_HPP
