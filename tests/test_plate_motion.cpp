@@ -9,6 +9,7 @@
 // direction, mirrored throws, the odeint system against the stop integration,
 // and the argument errors.
 #include <spinslide/motion/dynamics.hpp>
+#include <spinslide/motion/plate_terminal.hpp>
 #include <spinslide/motion/plate_throw.hpp>
 
 #include <gtest/gtest.h>
@@ -138,6 +139,64 @@ TEST(PlateThrow, BothMotionsStopTogetherAtTheFixedPoint) {
     EXPECT_NEAR(std::remainder(turn, m), 0.0, 1e-7) << r.shape << " " << got.direction;
     EXPECT_EQ(got.spin_sense, r.start.omega > 0 ? 1 : -1) << r.shape;
   }
+}
+
+// Every fixed point of the reference (numpy: Newton on the direction flow,
+// its Jacobian by central differences) is among plate_terminal_points' (the
+// library's closed-form Hessian), up to the shape's symmetry, with its
+// exponents; the stable ones are those with both exponents positive.
+TEST(PlateTerminal, FixedPointsMatchTheReference) {
+  const std::map<std::string, double> symmetry{
+      {"square", pi / 2}, {"triangle", 2 * pi / 3}, {"sole", pi}};
+  int matched = 0;
+  for (const auto& c : spinslide_reference::read_csv_rows(SPINSLIDE_PLATE_REFERENCE)) {
+    if (c.at(0) != "fixed") continue;
+    const double eps = std::stod(c.at(3)), phi = std::stod(c.at(4));
+    const std::array<double, 2> ex{std::stod(c.at(5)), std::stod(c.at(6))};
+    const auto points =
+        spinslide::plate_terminal_points(polygon_patch<double>(shape(c.at(1))),
+                                         gyration_radius<double>{std::sqrt(std::stod(c.at(2)))});
+    bool found = false;
+    for (const auto& p : points) {
+      const bool same_angle =
+          eps < 1e-12 || std::fabs(std::remainder(p.direction - phi, symmetry.at(c.at(1)))) < 1e-8;
+      if (std::fabs(p.ratio - eps) > 1e-9 || !same_angle) continue;
+      found = true;
+      EXPECT_NEAR(p.exponents[0], ex[0], 1e-6) << c.at(1) << " " << eps;
+      EXPECT_NEAR(p.exponents[1], ex[1], 1e-6) << c.at(1) << " " << eps;
+      EXPECT_EQ(p.stable, ex[0] > 0 && ex[1] > 0) << c.at(1) << " " << eps;
+    }
+    EXPECT_TRUE(found) << c.at(1) << " eps " << eps << " phi " << phi;
+    matched += found ? 1 : 0;
+  }
+  EXPECT_EQ(matched, 8);
+}
+
+// The uniform disk (a many-sided polygon) has a ring of fixed points at the
+// paper's ε₀, neutral along the ring (an exponent → 0).
+TEST(PlateTerminal, ManySidedPolygonsEndAtTheDisksRatio) {
+  const auto points = spinslide::plate_terminal_points(polygon_patch<double>(regular(96, 1.0, 0)),
+                                                       gyration_radius<double>{std::sqrt(0.5)});
+  int near_ring = 0;
+  for (const auto& p : points) {
+    if (std::fabs(p.ratio - spinslide::terminal_ratio()) > 2e-3) continue;
+    ++near_ring;
+    EXPECT_LT(std::fabs(p.exponents[0]), 1e-3);
+    EXPECT_GT(p.exponents[1], 0.1);
+  }
+  EXPECT_GT(near_ring, 0);
+}
+
+TEST(PlateTerminal, BadInertiaIsAPolicyError) {
+  const polygon_patch<double> sq(shape("square"));
+  EXPECT_THROW(spinslide::plate_terminal_points(sq, gyration_radius<double>{0.0}),
+               std::domain_error);
+  EXPECT_THROW(spinslide::plate_terminal_points(sq, gyration_radius<double>{-1.0}),
+               std::domain_error);
+  using namespace boost::math::policies;
+  EXPECT_TRUE(spinslide::plate_terminal_points(sq, gyration_radius<double>{std::nan("")},
+                                               policy<domain_error<ignore_error>>())
+                  .empty());
 }
 
 // A regular n-gon of circumradius 1 with k² = 1/2 tends to the library's

@@ -16,6 +16,7 @@
 #include <spinslide/motion/equations_of_motion.hpp>
 #include <spinslide/motion/motion_types.hpp>
 #include <spinslide/motion/plate_motion.hpp>
+#include <spinslide/motion/plate_terminal.hpp>
 #include <spinslide/motion/plate_throw.hpp>
 #include <spinslide/motion/tabulated_throw.hpp>
 #include <spinslide/motion/terminal.hpp>
