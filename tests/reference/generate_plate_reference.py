@@ -100,9 +100,9 @@ def throw(poly, k, u0, w0):
     small.terminal = True
     sol = solve_ivp(rhs(poly, k), (0.0, 1e4), y0, method="DOP853", rtol=1e-13,
                     atol=1e-30, events=small)
-    y = sol.y_events[0][0] if sol.status == 1 else sol.y[:, -1]
     if sol.status != 1:
         sys.exit("no stop within the integration range")
+    y = sol.y_events[0][0]
     _, _, d = wrench(poly, y[0:2], y[2])
     # d is D at the twist (u, w) = r D(n): the rest of the time is r/D(n).
     t = y[6] + (y[0] ** 2 + y[1] ** 2 + (k * y[2]) ** 2) / d

@@ -21,6 +21,11 @@
 #include <spinslide/values/patch_dissipation.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/policies/policy.hpp>
+#include <boost/math/tools/config.hpp>
+#include <boost/math/tools/precision.hpp>
+
 #include <array>
 #include <cmath>
 #include <cstddef>

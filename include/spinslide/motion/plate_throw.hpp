@@ -20,6 +20,8 @@
 #include <spinslide/values/friction_wrench.hpp>
 
 #include <boost/math/policies/policy.hpp>
+#include <boost/math/tools/config.hpp>
+#include <boost/math/tools/precision.hpp>
 
 #include <array>
 #include <cmath>
@@ -54,19 +56,21 @@ struct plate_ending {
 /// A throw to its stop.
 template <class Real>
 struct plate_throw_result {
-  using value_type = Real;               ///< the floating type
-  Real time;                             ///< the stop time
-  Real distance;                         ///< the length of the centre's path
-  std::array<Real, 2> displacement;      ///< the centre's displacement, world frame
-  Real rotation;                         ///< the total turn θ_end − θ₀ (signed)
-  plate_ending<Real> terminal;           ///< the limits at the stop
+  using value_type = Real;           ///< the floating type
+  Real time;                         ///< the stop time
+  Real distance;                     ///< the length of the centre's path
+  std::array<Real, 2> displacement;  ///< the centre's displacement, world frame
+  Real rotation;                     ///< the total turn θ_end − θ₀ (signed)
+  plate_ending<Real> terminal;       ///< the limits at the stop
+  bool reached_stop;  ///< false if the step limit ended the integration first (then inexact)
   std::vector<plate_sample<Real>> path;  ///< every accepted step, and the rest at the stop
 };
 
 namespace detail {
 
-/// The integration's limits: steps per stage, the stepper's tolerance, where
-/// the closed-form tail takes over, and the span of s given to the direction.
+/// The integration's limits: steps per stage, the stepper's tolerance (at
+/// least 512 ulp of the type: float's 7 digits cannot meet 1e-13), where the
+/// closed-form tail takes over, and the span of s given to the direction.
 struct plate_stop_limits {
   int max_steps = 20000;
   double tolerance = 1e-13;
@@ -117,7 +121,7 @@ class plate_stop_run {
     const plate_stop_flow<Real> flow(plate_.patch(), k, beta_);
     const Real s_end = -log(Real(limits_.tail_size));
     Real s = 0, ds = Real(0.05);
-    plate_step_control<stop_state, Real> stepper(Real(limits_.tolerance));
+    plate_step_control<stop_state, Real> stepper(tolerance());
     record(s);
     for (int steps = 0; s < s_end && steps < limits_.max_steps; ++steps) {
       Real step = fmin(ds, s_end - s);
@@ -143,12 +147,18 @@ class plate_stop_run {
     r.displacement = to_world({length * x[0], length * x[1]});
     r.distance = length * (y_[7] + e2 * hypot(d.n[0], d.n[1]) / d.dissipation);
     r.terminal = terminal(s);
+    r.reached_stop = !(s < s_end);
     path_.push_back({r.time, r.displacement, angle0_ + r.rotation, {0, 0}, 0});
     r.path = std::move(path_);
     return r;
   }
 
  private:
+  Real tolerance() const {
+    BOOST_MATH_STD_USING
+    return fmax(Real(limits_.tolerance), 512 * boost::math::tools::epsilon<Real>());
+  }
+
   std::array<Real, 2> to_world(const std::array<Real, 2>& x) const {
     BOOST_MATH_STD_USING
     const Real c = cos(angle0_), s = sin(angle0_);
@@ -171,7 +181,7 @@ class plate_stop_run {
     const Real k = plate_.radius_of_gyration();
     const plate_terminal_flow<Real> flow(plate_.patch(), k);
     direction_state n{y_[0], y_[1], y_[2]}, rate{};
-    plate_step_control<direction_state, Real> stepper(Real(limits_.tolerance));
+    plate_step_control<direction_state, Real> stepper(tolerance());
     const Real s_end = s + Real(limits_.terminal_span);
     Real ds = Real(0.1);
     bool still = false;
@@ -181,7 +191,7 @@ class plate_stop_run {
         normalise_direction(n);
         flow(n, rate, s);
         still = sqrt(rate[0] * rate[0] + rate[1] * rate[1] + rate[2] * rate[2]) <
-                Real(limits_.terminal_rate);
+                fmax(Real(limits_.terminal_rate), 1024 * boost::math::tools::epsilon<Real>());
       }
       ds = step;
     }
@@ -213,7 +223,7 @@ plate_throw_result<Real> throw_plate(const plate_motion<Real>& plate,
   Real bad = 0;
   if (!detail::check_twist(function, start, bad, pol) ||
       !detail::check(function, "angle", angle, detail::argument_rule::finite, &bad, pol)) {
-    return {bad, bad, {bad, bad}, bad, {bad, bad, 0, false}, {}};
+    return {bad, bad, {bad, bad}, bad, {bad, bad, 0, false}, false, {}};
   }
   return detail::plate_stop_run<Real>(plate, start, angle).run();
 }

@@ -20,6 +20,8 @@
 #include <spinslide/values/friction_wrench.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
+#include <boost/math/tools/config.hpp>
+
 #include <array>
 #include <cmath>
 

@@ -10,13 +10,14 @@
 /// Not Fehlberg 7(8): its error estimate vanishes for quadrature-like
 /// components (the time, turn and position here), and its results wandered
 /// by 1e-9 at a tolerance of 1e-13; Cash–Karp's converge as the tolerance
-/// (docs/plate_dynamics.md, "Accuracy").  Held by value, not through odeint's controlled_runge_kutta,
-/// whose copy of a default-built stepper with std::array state reads
+/// (docs/plate_dynamics.md, "Accuracy").  Held by value, not through odeint's
+/// controlled_runge_kutta, whose copy of a default-built stepper with std::array state reads
 /// uninitialised members (g++'s -Wuninitialized).
 
 #ifndef SPINSLIDE_MOTION_DETAIL_PLATE_STEP_CONTROL_HPP
 #define SPINSLIDE_MOTION_DETAIL_PLATE_STEP_CONTROL_HPP
 
+#include <boost/math/tools/config.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_cash_karp54.hpp>
 
 #include <cmath>
