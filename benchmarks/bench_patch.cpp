@@ -219,8 +219,8 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   spinslide_bench::ratio_reporter reporter("disk");
   for (const char* name :
-       {"rectangle_uniform", "rectangle_linear", "rectangle_far", "rectangle_sliding",
-        "no_tension_construction", "gauss_1e6", "gauss_1e10"})
+       {"rectangle_uniform", "rectangle_linear", "rectangle_near", "rectangle_moderate",
+        "rectangle_far", "rectangle_sliding", "no_tension_construction", "gauss_1e6", "gauss_1e10"})
     reporter.add_comparison(name, "disk");
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();

@@ -52,8 +52,8 @@ struct edge_terms {
 };
 
 /// Λ = asinh(s₁/|h|) − asinh(s₀/|h|) without cancellation: with s₀, s₁ of
-/// one sign, asinh a − asinh b = asinh(a√(1+b²) − b√(1+a²)) (DLMF 4.38.19's
-/// addition theorem) = asinh(L(s₀+s₁)/(s₁ρ₀ + s₀ρ₁)).
+/// one sign, asinh a − asinh b = asinh(a√(1+b²) − b√(1+a²)) (sinh of a
+/// difference, A&S 4.5.24) = asinh(L(s₀+s₁)/(s₁ρ₀ + s₀ρ₁)).
 template <class Real>
 Real asinh_difference(Real s0, Real s1, Real rho0, Real rho1, Real h, Real length) {
   BOOST_MATH_STD_USING

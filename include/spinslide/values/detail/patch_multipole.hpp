@@ -11,7 +11,7 @@
 /// so that F = −i q̂ S and the torque about z₀ is −Re(q̂ T), with
 ///   S = ∬ p P(ζ) Q(ζ̄),   T = ∬ p z̄ P(ζ) Q(ζ̄),
 /// P and Q the binomial series of (1 + ζ)^{1/2} and (1 + ζ̄)^{−1/2} to order N
-/// (DLMF 4.6.7), both integrals of polynomials: over a polygon exactly by
+/// (the binomial series, DLMF §4.6), both integrals of polynomials: over a polygon exactly by
 /// Green's theorem ∬ f dA = (1/2i)∮ F dz, ∂F/∂z̄ = f, and Gauss–Legendre on
 /// each edge; over a segment by Gauss–Legendre along it.  sign(ω) cancels:
 /// ω = 0 (ζ = 0) is pure sliding, F = −v̂.  The truncation error is below
@@ -119,7 +119,7 @@ cplx<Real> horner(const std::array<Real, M>& c, std::size_t order, const cplx<Re
 
 /// The series coefficients: binom(1/2, j) for P, binom(−1/2, k)/(k + m) for
 /// the antiderivatives z̄^m Σ binom(−1/2, k) ζ̄^k/(k + m) (m = 1, 2, 3), and
-/// binom(−1/2, k) itself (m = 0, for the segment); DLMF 4.6.7.
+/// binom(−1/2, k) itself (m = 0, for the segment); the binomial series, DLMF §4.6.
 template <class Real>
 struct multipole_series {
   static constexpr std::size_t size = max_multipole_order<Real>() + 1;
