@@ -212,3 +212,28 @@ TEST(PolygonPatchDegenerate, PointFriction) {
 }
 
 }  // namespace
+
+namespace {
+
+// ω → 0 from either side tends to pure sliding (the expansion's limit, with
+// nothing divided by ω): the wrench at ω = ±10⁻ᵏ is within ~10⁻ᵏ (and a few
+// ulp) of ω = 0's.
+TEST(PolygonPatchWrench, SpinToZeroIsPureSliding) {
+  const polygon_patch<double> p(square, centre_of_pressure<double>{{0.3, 0.1}});
+  const planar_twist<double> slide{{0.6, -0.8}, 0};
+  const auto s = spinslide::friction_wrench(p, slide);
+  EXPECT_NEAR(s.force[0], -0.6, 1e-16);
+  EXPECT_NEAR(s.force[1], 0.8, 1e-16);
+  EXPECT_NEAR(s.torque, 0.3 * 0.8 - 0.1 * -0.6, 1e-16);  // −e × v̂
+  for (double omega : {1e-3, 1e-6, 1e-9, 1e-300}) {
+    for (double sense : {1.0, -1.0}) {
+      const auto f =
+          spinslide::friction_wrench(p, planar_twist<double>{{0.6, -0.8}, sense * omega});
+      EXPECT_NEAR(f.force[0], s.force[0], 2 * omega + 4e-16);
+      EXPECT_NEAR(f.force[1], s.force[1], 2 * omega + 4e-16);
+      EXPECT_NEAR(f.torque, s.torque, 2 * omega + 4e-16);
+    }
+  }
+}
+
+}  // namespace
