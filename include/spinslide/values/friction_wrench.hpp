@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
 namespace spinslide {
 
@@ -191,24 +192,32 @@ planar_wrench<Real> slab_wrench(const loaded_region<Real, N>& whole, const slab_
   return sum;
 }
 
-/// The wrench of an area or a line patch in the working type W (double for
-/// float), ω ≠ 0: a thin area by slabs.
+/// The wrench of an area or a line patch whose loaded vertices, in the
+/// working type W (double for float), are `vertices`; ω ≠ 0; a thin area by slabs.
 template <class W, class Real>
-planar_wrench<W> working_wrench(const polygon_patch<Real>& p, const planar_twist<W>& w,
-                                W* dissipation) {
-  vertex_list<W> vertices;
-  for (const auto& v : p.loaded_vertices()) vertices.push_back({W(v[0]), W(v[1])});
+planar_wrench<W> working_wrench(const polygon_patch<Real>& p, const vertex_list<W>& vertices,
+                                const planar_twist<W>& w, W* dissipation) {
   const loaded_region<W, 9> r{vertices,
                               p.shape() == patch_shape::area,
                               {W(p.pressure_origin()[0]), W(p.pressure_origin()[1])},
                               W(p.loaded_radius()),
                               W(p.pressure_at_origin()),
                               {W(p.pressure_gradient()[0]), W(p.pressure_gradient()[1])}};
-  if (r.area) {
-    const slab_plan<W> plan = plan_slabs(vertices);
-    if (plan.count > 1) return slab_wrench(r, plan, w, dissipation);
-  }
+  if (p.thin()) return slab_wrench(r, plan_slabs(vertices), w, dissipation);
   return region_wrench(r, w, dissipation);
+}
+
+/// The patch's own vertices when W is Real; a copy in W otherwise.
+template <class W, class Real>
+planar_wrench<W> working_wrench(const polygon_patch<Real>& p, const planar_twist<W>& w,
+                                W* dissipation) {
+  if constexpr (std::is_same<W, Real>::value) {
+    return working_wrench(p, p.loaded_vertices(), w, dissipation);
+  } else {
+    vertex_list<W> vertices;
+    for (const auto& v : p.loaded_vertices()) vertices.push_back({W(v[0]), W(v[1])});
+    return working_wrench(p, vertices, w, dissipation);
+  }
 }
 
 /// The wrench of a checked twist.

@@ -20,6 +20,7 @@
 #include <spinslide/values/detail/patch_geometry.hpp>
 #include <spinslide/values/detail/patch_outline.hpp>
 #include <spinslide/values/detail/patch_pressure.hpp>
+#include <spinslide/values/detail/patch_slabs.hpp>
 
 #include <boost/math/special_functions/hypot.hpp>
 #include <boost/math/tools/precision.hpp>
@@ -133,6 +134,9 @@ class polygon_patch {
   Real radius() const { return radius_; }
   /// The centre of pressure.
   const vertex& centre() const { return centre_; }
+  /// True for a loaded area longer than 4 times its width: its wrench is
+  /// summed over slabs (detail/patch_slabs.hpp).
+  bool thin() const { return thin_; }
 
  private:
   polygon_patch() = default;
@@ -257,12 +261,14 @@ class polygon_patch {
     }
     rho0_ = 0;
     for (const auto& v : loaded_) rho0_ = fmax_(rho0_, norm(detail::minus(v, z0_)));
+    thin_ = shape_ == patch_shape::area && detail::plan_slabs(loaded_).count > 1;
   }
 
   patch_shape shape_ = patch_shape::area;
   vertex_list loaded_;
   vertex z0_{}, beta_{}, centre_{};
   Real p0_ = 0, rho0_ = 0, radius_ = 0;
+  bool thin_ = false;
 };
 
 }  // namespace spinslide

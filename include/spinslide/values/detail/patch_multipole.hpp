@@ -168,6 +168,7 @@ multipole_sums<Real> polygon_multipole(const vertex_list<Real, N>& poly,
   cplx<Real> S{0, 0}, T{0, 0}, SD{0, 0};
   const cplx<Real> half_b{f.b.re / 2, f.b.im / 2}, half_bbar = conj(half_b);
   const std::size_t n = poly.size(), o = s.order;
+  const bool uniform = f.b.re == 0 && f.b.im == 0;
   for (std::size_t i = 0; i < n; ++i) {
     const cplx<Real> A{poly[i][0], poly[i][1]};
     const point2<Real>& next = poly.next(i);
@@ -180,11 +181,15 @@ multipole_sums<Real> polygon_multipole(const vertex_list<Real, N>& poly,
       const cplx<Real> zb2 = zb * zb;
       const cplx<Real> Q1 = zb * horner(s.q[1], o, zeta_bar);
       const cplx<Real> Q2 = zb2 * horner(s.q[2], o, zeta_bar);
-      const cplx<Real> Q3 = zb2 * zb * horner(s.q[3], o, zeta_bar);
       const cplx<Real> lin = cplx<Real>{f.a, Real(0)} + half_bbar * z;
       const cplx<Real> wd{w * d.re, w * d.im};
       S = S + P * (lin * Q1 + half_b * Q2) * wd;
-      T = T + P * (lin * Q2 + half_b * Q3) * wd;
+      if (uniform) {
+        T = T + P * lin * Q2 * wd;
+      } else {  // Q₃ only for a pressure gradient
+        const cplx<Real> Q3 = zb2 * zb * horner(s.q[3], o, zeta_bar);
+        T = T + P * (lin * Q2 + half_b * Q3) * wd;
+      }
       if (with_dissipation) {
         const cplx<Real> D1 = zb * horner(s.d[0], o, zeta_bar);
         const cplx<Real> D2 = zb2 * horner(s.d[1], o, zeta_bar);
