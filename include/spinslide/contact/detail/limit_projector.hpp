@@ -7,22 +7,19 @@
 //
 // The nearest point of the curve C(ε) = (𝓕(ε), 𝓣(ε)) satisfies
 //   h(ε) = (x − 𝓕) − wε(y − 𝓣) = 0,
-// because the curve's normal at ε is (ε, 1) (𝓣′ = −ε𝓕′).  For x, y > 0,
-// h(0) = x > 0 and h(∞) = −∞, and h changes sign once where P lies outside L
-// (§11), so the root is bracketed.  It is found by Newton's method in ε,
-// safeguarded by the bracket (bisection in ln ε, or a growing factor towards
-// an open side), with 𝓕′ where the profile gives it (force_slope.hpp: Hertz,
-// Boussinesq, the disk's table), else the secant of 𝓕 through the last two
-// samples (a difference quotient for the first).  Sticking is decided on the
-// way: L contains the quadrilateral (0, 0), (1, 0), C(ε), (0, ⟨r⟩) of every
-// sample (convexity), and so the inward normal of C(ε) (in [0, 𝓕] × [0, 𝓣]).
+// because the curve's normal at ε is (ε, 1) (𝓣′ = −ε𝓕′).  For x, y > 0, h(0) = x > 0 and h(∞) =
+// −∞, and h changes sign once where P lies outside L (§11), so the root is bracketed.  It is found
+// by Newton's method in ε, safeguarded by the bracket (bisection in ln ε, or a growing factor
+// towards an open side), with 𝓕′ where the profile gives it (force_slope.hpp: Hertz, Boussinesq,
+// the disk's table), else the secant of 𝓕 through the last two samples (a difference quotient for
+// the first).  Sticking is decided on the way: L contains the quadrilateral (0, 0), (1, 0), C(ε),
+// (0, ⟨r⟩) of every sample (convexity), and so the inward normal of C(ε) (in [0, 𝓕] × [0, 𝓣]).
 //
-// Where 𝓕 jumps (the uncoupled caps jump from 0 to 1 at ε = 0⁺), L has a
-// straight edge and the bracket closes on the jump without h reaching 0: the
-// point is then projected onto the chord between the two sides (the edge).
-// The ends ε = 0 and ε = ∞ are the bracket's initial sides, C(0) = (0, ⟨r⟩)
-// and C(∞) = (1, 0); the search goes no further than the smallest and the
-// largest normal number before it projects onto the chord to the end.
+// Where 𝓕 jumps (the uncoupled caps jump from 0 to 1 at ε = 0⁺), L has a straight edge and the
+// bracket closes on the jump without h reaching 0: the point is then projected onto the chord
+// between the two sides (the edge). The ends ε = 0 and ε = ∞ are the bracket's initial sides, C(0)
+// = (0, ⟨r⟩) and C(∞) = (1, 0); the search goes no further than the smallest and the largest
+// normal number before it projects onto the chord to the end.
 #ifndef SPINSLIDE_CONTACT_DETAIL_LIMIT_PROJECTOR_HPP
 #define SPINSLIDE_CONTACT_DETAIL_LIMIT_PROJECTOR_HPP
 
@@ -84,18 +81,15 @@ class limit_projector {
   }
 
  private:
-  // Apart from the tests above, so that a caller inlines those (a stick costs
-  // the triangle's test); warm steps first, without a start from the guess.
-  // Out of line, and the safeguarded search out of line again: a warm step
-  // then runs in a small function, not in the search's frame (about 5 to 45
-  // instructions less a warm projection or trial cap: tools/path_instructions).
+  // Apart from the tests above (a caller inlines those: a stick costs the
+  // triangle's test), and the search apart again, so that the warm steps run
+  // in a small frame (5 to 45 instructions less: tools/path_instructions).
   BOOST_NOINLINE projection project(Real start, const curve_point<Real>* from) {
     projection warm{};
     if (!(start > 0 && start < inf())) start = first_ratio(start);
     if (warm_steps(start, from, warm)) return warm;
     return search(start);
   }
-  // The safeguarded search from `start`.
   BOOST_NOINLINE projection search(Real start) {
     lo_ = {Real(0), {Real(0), top_}, x_, Real(0)};
     hi_ = {inf(), {Real(1), Real(0)}, -inf(), Real(0)};
@@ -175,9 +169,7 @@ class limit_projector {
         if (o != warm_outcome::stepped) return o == warm_outcome::done;
       }
     }
-    static_cast<void>(start);
-    static_cast<void>(from);
-    static_cast<void>(result);
+    static_cast<void>(start), static_cast<void>(from), static_cast<void>(result);
     return false;
   }
   // The first warm step from a curve point that a previous projection left

@@ -5,22 +5,19 @@
 // The point of the 3-D limit set L₃ = {(f, t) ∈ ℝ²×ℝ : (|f|, |t|) ∈ L} nearest
 // to z in a metric M, (p − z)ᵀM(p − z) (docs/theory.md §11, "Any metric").
 //
-// Outside L₃ the nearest point p and the slip s = M(z − p) satisfy p = ∇D(s),
-// with D(s) = |s_f|𝓕(ε) + |s_t|𝓣(ε), ε = |s_f|/|s_t|, the dissipation
-// function of the contact (1-homogeneous and convex; ∇D is the friction law,
-// (𝓕 s_f/|s_f|, 𝓣 sign s_t)).  So s is the minimum of the strictly convex
+// Outside L₃ the nearest point p and the slip s = M(z − p) satisfy p = ∇D(s), with D(s) =
+// |s_f|𝓕(ε) + |s_t|𝓣(ε), ε = |s_f|/|s_t|, the dissipation function of the contact (1-homogeneous
+// and convex; ∇D is the friction law, (𝓕 s_f/|s_f|, 𝓣 sign s_t)).  So s is the minimum of the
+// strictly convex
 //   Ψ(s) = ½ sᵀM⁻¹s + D(s) − zᵀs,
-// found by Newton's method with a line search on the sign of Ψ's slope
-// (which keeps its digits where Ψ's differences round away: newton()).
-// Whatever the iteration's error, ∇D(s) lies on the curve (to the profile's
-// rounding) with s along its normal (ε d, sign s_t): only nearness is
-// iterated, and it never fails: every step lowers Ψ, and the iteration ends
-// when Newton's decrement is within the rounding of ∇Ψ's terms, which
-// leaves the nearest point to a few ulp times the metric's condition number
-// (tests/test_metric_projection.cpp, in float, double, long double and
-// cpp_bin_float_50).  Every bound is the type's own (epsilon, the normal
-// numbers' range).  Inside L₃ (decided on the magnitudes by the 2-D
-// projection) s = 0: sticking.
+// found by Newton's method with a line search on the sign of Ψ's slope (which keeps its digits
+// where Ψ's differences round away: newton()). Whatever the iteration's error, ∇D(s) lies on the
+// curve (to the profile's rounding) with s along its normal (ε d, sign s_t): only nearness is
+// iterated, and it never fails: every step lowers Ψ, and the iteration ends when Newton's
+// decrement is within the rounding of ∇Ψ's terms, which leaves the nearest point to a few ulp
+// times the metric's condition number (tests/test_metric_projection.cpp, in float, double, long
+// double and cpp_bin_float_50).  Every bound is the type's own (epsilon, the normal numbers'
+// range).  Inside L₃ (decided on the magnitudes by the 2-D projection) s = 0: sticking.
 #ifndef SPINSLIDE_CONTACT_DETAIL_METRIC_PROJECTOR_HPP
 #define SPINSLIDE_CONTACT_DETAIL_METRIC_PROJECTOR_HPP
 
@@ -90,9 +87,7 @@ class metric_projector {
   }
 
  private:
-  // The careful iteration, out of line so that the fast path runs in a small
-  // frame (about 20 to 50 instructions less a warm impulse:
-  // tools/path_instructions).
+  // Out of line: the fast path runs in a small frame (tools/path_instructions).
   BOOST_NOINLINE projection careful(Real start, const curve_point<Real>* from) {
     using std::fabs;
     // With a start: if z lies beyond the support plane of L₃ with the normal
@@ -300,21 +295,17 @@ class metric_projector {
     return point({tau * r.n[0], tau * r.n[1], tau * r.n[2]}, known);
   }
 
-  // Newton's method on Ψ from s: the step δ solves (M⁻¹ + ∇²D)δ = −∇Ψ, and
-  // the line search moves along it by the sign of Ψ's slope ∇Ψ·δ, which is
-  // known to the rounding of ∇Ψ's terms (a few ulp of z's size), not by Ψ's
-  // values, whose differences round away first: with a metric conditioned
-  // near its limit a decrease of Ψ of 1e-19 is all a step of ∇Ψ = 1e-7 can
-  // show, below Ψ's rounding, and a line search on values stalls there.
-  // Converged when Newton's decrement −∇Ψ·δ is within that rounding and
-  // every component of ∇Ψ within its own (along(): no direction left in
-  // which Ψ falls that this type can show), when δ is no descent direction,
-  // or when the step is negligible (below 4 ulp of s_f and of s_t).  Never
-  // fails: every iterate is on the curve with s along its normal, each step
-  // lowers the strictly convex Ψ (line_search), and after
-  // max_newton_iterations the last iterate is the answer.  A step within
-  // first_order() of s ends the iteration without evaluating the profile
-  // again (last_step).
+  // Newton's method on Ψ from s: the step δ solves (M⁻¹ + ∇²D)δ = −∇Ψ, and the line search moves
+  // along it by the sign of Ψ's slope ∇Ψ·δ, which is known to the rounding of ∇Ψ's terms (a few
+  // ulp of z's size), not by Ψ's values, whose differences round away first: with a metric
+  // conditioned near its limit a decrease of Ψ of 1e-19 is all a step of ∇Ψ = 1e-7 can show, below
+  // Ψ's rounding, and a line search on values stalls there. Converged when Newton's decrement
+  // −∇Ψ·δ is within that rounding and every component of ∇Ψ within its own (along(): no direction
+  // left in which Ψ falls that this type can show), when δ is no descent direction, or when the
+  // step is negligible (below 4 ulp of s_f and of s_t).  Never fails: every iterate is on the
+  // curve with s along its normal, each step lowers the strictly convex Ψ (line_search), and after
+  // max_newton_iterations the last iterate is the answer.  A step within first_order() of s ends
+  // the iteration without evaluating the profile again (last_step).
   projection newton(point_data x) const {
     point_data previous{};
     for (int iteration = 0; iteration < max_newton_iterations; ++iteration) {
