@@ -109,6 +109,15 @@ void with_gauss_rule(std::size_t needed, F& f) {
   return gauss_nodes<Real, 90>(f);
 }
 
+/// Gauss points per edge for the expansion of order N.  Exact would be N + 3
+/// (degree 2N + 4 in the edge parameter), but a term of degree j + k in
+/// (ζ, ζ̄) is of size R^−(j+k): a rule exact to degree 2n − 1 misses only
+/// terms below R^−(2n−5), under the truncation's R^−(N+1) for
+/// n = (N + 6)/2 + 1 (the crossover rows of patch_reference.csv test it).
+inline std::size_t polygon_nodes(std::size_t order) { return (order + 6) / 2 + 1; }
+/// The same along a segment (degree 2N + 2 there).
+inline std::size_t segment_nodes(std::size_t order) { return (order + 4) / 2 + 1; }
+
 /// Σ c_k x^k by Horner for real c and complex x.
 template <class Real, std::size_t M>
 cplx<Real> horner(const std::array<Real, M>& c, std::size_t order, const cplx<Real>& x) {
@@ -159,7 +168,7 @@ struct multipole_frame {
 /// S and T of the polygon `poly` (vertices already in the scaled frame):
 /// Green's theorem with F = P(ζ)[(a + b̄z/2) Q₁ + (b/2) Q₂] for S and
 /// P(ζ)[(a + b̄z/2) Q₂ + (b/2) Q₃] for T, Q_m = z̄^m Σ binom(−1/2,k) ζ̄^k/(k+m)
-/// (docs/patches.md, "Far centres"); degree 2N + 4 in the edge parameter.
+/// (docs/patches.md, "Far centres"); Gauss on each edge (polygon_nodes).
 template <class Real, std::size_t N>
 multipole_sums<Real> polygon_multipole(const vertex_list<Real, N>& poly,
                                        const multipole_frame<Real>& f,
@@ -196,14 +205,14 @@ multipole_sums<Real> polygon_multipole(const vertex_list<Real, N>& poly,
         SD = SD + P * (lin * D1 + half_b * D2) * wd;
       }
     };
-    with_gauss_rule<Real>(o + 3, node);
+    with_gauss_rule<Real>(polygon_nodes(o), node);
   }
   // ∬ f dA = (1/2i) ∮ F dz: X/(2i) = (Im X, −Re X)/2.
   return {{S.im / 2, -S.re / 2}, {T.im / 2, -T.re / 2}, {SD.im / 2, -SD.re / 2}};
 }
 
 /// S and T of the segment from x₀ to x₁ (scaled frame) under the line
-/// density p = a + Re(b̄z): Gauss–Legendre along it, degree 2N + 2.
+/// density p = a + Re(b̄z): Gauss–Legendre along it (segment_nodes).
 template <class Real>
 multipole_sums<Real> segment_multipole(const point2<Real>& x0, const point2<Real>& x1,
                                        const multipole_frame<Real>& f,
@@ -228,7 +237,7 @@ multipole_sums<Real> segment_multipole(const point2<Real>& x0, const point2<Real
       SD = SD + cplx<Real>{w * half_length * p * gd.re, w * half_length * p * gd.im};
     }
   };
-  with_gauss_rule<Real>(o + 2, node);
+  with_gauss_rule<Real>(segment_nodes(o), node);
   return {S, T, SD};
 }
 
