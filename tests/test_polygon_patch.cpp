@@ -237,3 +237,32 @@ TEST(PolygonPatchWrench, SpinToZeroIsPureSliding) {
 }
 
 }  // namespace
+
+namespace {
+
+// Any length unit: the square and its centre of pressure scaled by 10^±100
+// with the twist's velocity scaled alike give the same force and the torque
+// scaled by the unit (no overflow of ρ⁴ in the edge sums, no underflow), to
+// the inputs' rounding.
+TEST(PolygonPatchWrench, AnyLengthUnit) {
+  auto wrench_at = [](double unit, const planar_twist<double>& w) {
+    std::vector<point> v;
+    for (const auto& x : square) v.push_back({unit * x[0], unit * x[1]});
+    const polygon_patch<double> p(v, centre_of_pressure<double>{{0.3 * unit, 0.2 * unit}});
+    return spinslide::friction_wrench(
+        p, planar_twist<double>{{unit * w.velocity[0], unit * w.velocity[1]}, w.omega});
+  };
+  for (const auto& w :
+       {planar_twist<double>{{0.3, -0.2}, 0.7}, planar_twist<double>{{30, -20}, 0.07},
+        planar_twist<double>{{3e5, -2e5}, 0.7}}) {
+    const auto one = wrench_at(1, w);
+    for (double unit : {1e-100, 1e-30, 1e30, 1e100}) {
+      const auto f = wrench_at(unit, w);
+      EXPECT_NEAR(f.force[0], one.force[0], 2e-15) << unit;
+      EXPECT_NEAR(f.force[1], one.force[1], 2e-15) << unit;
+      EXPECT_NEAR(f.torque / unit, one.torque, 2e-15) << unit;
+    }
+  }
+}
+
+}  // namespace
