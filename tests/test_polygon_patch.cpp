@@ -247,6 +247,7 @@ namespace {
 TEST(PolygonPatchWrench, AnyLengthUnit) {
   auto wrench_at = [](double unit, const planar_twist<double>& w) {
     std::vector<point> v;
+    v.reserve(square.size());
     for (const auto& x : square) v.push_back({unit * x[0], unit * x[1]});
     const polygon_patch<double> p(v, centre_of_pressure<double>{{0.3 * unit, 0.2 * unit}});
     return spinslide::friction_wrench(
