@@ -18,8 +18,8 @@
 #include <spinslide/engines/mujoco.hpp>
 #include <spinslide/spinslide.hpp>
 
-#include "../engines/mujoco/examples/mujoco_disk/scene.hpp"
 #include "../engines/mujoco/examples/mujoco_humanoid/humanoid.hpp"
+#include "mujoco_disk_bench.hpp"
 #include "ratio_reporter.hpp"
 
 #include <cmath>
@@ -29,34 +29,16 @@
 
 namespace {
 
-enum class friction { native, none, spinslide };
+using mujoco_disk_bench::friction;
 
 void step_the_disk(benchmark::State& state, friction kind, bool moving) {
-  const mujoco_scene::friction_model fm{"", kind == friction::native ? 4 : 1, "elliptic"};
-  const auto model = mujoco_scene::load(mujoco_scene::disk_xml(fm));
-  const mujoco_scene::data_ptr data(mj_makeData(model.get()));
-  mjModel* m = model.get();
-  mjData* d = data.get();
-  std::unique_ptr<spinslide::mujoco::coupled_friction> coupled;
-  if (kind == friction::spinslide) {
-    coupled = std::make_unique<spinslide::mujoco::coupled_friction>(m);
-    coupled->couple(
-        spinslide::mujoco::geom_name{"disk"}, spinslide::mujoco::geom_name{"floor"},
-        spinslide::pair_friction(spinslide::uniform_disk<>(), spinslide::patch_radius<double>{0.06},
-                                 spinslide::friction_coefficient<double>{0.2}));
-  }
-  auto step = [&] {
-    if (coupled)
-      coupled->step(d);
-    else
-      mj_step(m, d);
-  };
-  const double v0 = moving ? 0.3 : 0.0, omega0 = moving ? 5.0 : 0.0;
-  mujoco_scene::settle_and_throw(m, d, v0, omega0, step);
+  mujoco_disk_bench::scene scene(kind, moving ? 0.3 : 0.0, moving ? 5.0 : 0.0);
+  mjModel* m = scene.model();
+  mjData* d = scene.data();
   const std::vector<mjtNum> qpos(d->qpos, d->qpos + m->nq), qvel(d->qvel, d->qvel + m->nv);
   int since_throw = 0;
   for (auto _ : state) {
-    step();
+    scene.step();
     if (++since_throw == 1000) {
       std::copy(qpos.begin(), qpos.end(), d->qpos);
       std::copy(qvel.begin(), qvel.end(), d->qvel);

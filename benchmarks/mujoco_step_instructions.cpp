@@ -12,16 +12,12 @@
 //   valgrind --tool=callgrind ./mujoco_step_instructions native|ours [moving]
 //   callgrind_annotate --inclusive=yes callgrind.out.<pid>.1
 // (the dump ".1" holds the 200 steps only: its PROGRAM TOTALS over 200).
-#include <spinslide/engines/mujoco.hpp>
-#include <spinslide/spinslide.hpp>
-
 #include <valgrind/callgrind.h>
 
-#include "../engines/mujoco/examples/mujoco_disk/scene.hpp"
+#include "mujoco_disk_bench.hpp"
 
 #include <cstdio>
 #include <cstring>
-#include <memory>
 
 int main(int argc, char** argv) {
   if (argc < 2 || (std::strcmp(argv[1], "ours") != 0 && std::strcmp(argv[1], "native") != 0)) {
@@ -29,30 +25,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   const bool ours = std::strcmp(argv[1], "ours") == 0, moving = argc > 2;
-  const mujoco_scene::friction_model fm{"", ours ? 1 : 4, "elliptic"};
-  const auto model = mujoco_scene::load(mujoco_scene::disk_xml(fm));
-  const mujoco_scene::data_ptr data(mj_makeData(model.get()));
-  mjModel* m = model.get();
-  mjData* d = data.get();
-  std::unique_ptr<spinslide::mujoco::coupled_friction> coupled;
-  if (ours) {
-    coupled = std::make_unique<spinslide::mujoco::coupled_friction>(m);
-    coupled->couple(
-        spinslide::mujoco::geom_name{"disk"}, spinslide::mujoco::geom_name{"floor"},
-        spinslide::pair_friction(spinslide::uniform_disk<>(), spinslide::patch_radius<double>{0.06},
-                                 spinslide::friction_coefficient<double>{0.2}));
-  }
-  auto step = [&] {
-    if (coupled)
-      coupled->step(d);
-    else
-      mj_step(m, d);
-  };
-  mujoco_scene::settle_and_throw(m, d, moving ? 0.3 : 0.0, moving ? 5.0 : 0.0, step);
+  using mujoco_disk_bench::friction;
+  mujoco_disk_bench::scene scene(ours ? friction::spinslide : friction::native, moving ? 0.3 : 0.0,
+                                 moving ? 5.0 : 0.0);
   constexpr int steps = 200;
   CALLGRIND_ZERO_STATS;
-  for (int i = 0; i < steps; ++i) step();
+  for (int i = 0; i < steps; ++i) scene.step();
   CALLGRIND_DUMP_STATS_AT("steps");
-  std::printf("%d steps, %d contacts at the end\n", steps, d->ncon);
+  std::printf("%d steps, %d contacts at the end\n", steps, scene.data()->ncon);
   return 0;
 }
