@@ -74,7 +74,9 @@ class polygon_patch {
   polygon_patch(const Range& vertices, const centre_of_pressure<Real>& centre) {
     build(vertices, &centre.point);
   }
+  /// The same from a braced list of vertices, uniform.
   polygon_patch(std::initializer_list<vertex> vertices) { build(vertices, nullptr); }
+  /// The same from a braced list of vertices, with the centre of pressure `centre`.
   polygon_patch(std::initializer_list<vertex> vertices, const centre_of_pressure<Real>& centre) {
     build(vertices, &centre.point);
   }
