@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -94,7 +95,7 @@ template <class State>
 void normalise_direction(State& y) {
   BOOST_MATH_STD_USING
   const auto norm = sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2]);
-  for (int i = 0; i < 3; ++i) y[i] /= norm;
+  for (std::size_t i = 0; i < 3; ++i) y[i] /= norm;
 }
 
 /// One throw: the flow in s to the tail, the tails, then the direction's limit.

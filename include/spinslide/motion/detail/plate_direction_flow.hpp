@@ -24,6 +24,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 
 namespace spinslide {
 namespace detail {
@@ -95,7 +96,7 @@ class plate_terminal_flow {
     const plate_direction<Real> d = direction_wrench(*patch_, k_, y);
     dyds.fill(0);
     if (!(d.dissipation > 0)) return;
-    for (int i = 0; i < 3; ++i) dyds[i] = (d.a[i] + d.dissipation * d.n[i]) / d.dissipation;
+    for (std::size_t i = 0; i < 3; ++i) dyds[i] = (d.a[i] + d.dissipation * d.n[i]) / d.dissipation;
   }
 
  private:
