@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "random_metric.hpp"
+#include "regular_polygon.hpp"
 
 namespace {
 
@@ -182,11 +183,7 @@ TEST(PatchProjection, WarmStartsGiveTheColdAnswer) {
 // A 256-gon under uniform pressure is the disk to 1e-4 (its 𝓕, 𝓣 differ by
 // about (π/n)²/6 relatively): the projections agree to that.
 TEST(PatchProjection, ManyGonAgreesWithTheRoundDisksProjection) {
-  std::vector<point> gon;
-  const int n = 256;
-  for (int k = 0; k < n; ++k)
-    gon.push_back({std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n)});
-  const polygon_patch<double> patch(gon);
+  const polygon_patch<double> patch(spinslide_test::regular_polygon(256));
   const auto disk = spinslide::uniform_disk<>();
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(-1.5, 1.5);
