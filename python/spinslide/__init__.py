@@ -20,6 +20,7 @@ Built from the C++ headers of the same version (docs/python.md).
 
 import sys as _sys
 import time as _time
+from typing import NamedTuple as _NamedTuple
 
 import numpy as _np
 
@@ -27,6 +28,10 @@ from ._core import (  # noqa: F401  (re-exported)
     Annulus,
     Boussinesq,
     Hertz,
+    PatchShape,
+    PlateEnding,
+    PlateThrow,
+    PolygonPatch,
     Profile,
     RadialProfile,
     RatioFlowZero,
@@ -51,6 +56,7 @@ from ._core import (  # noqa: F401  (re-exported)
     terminal_motion,
     terminal_ratio,
     terminal_window,
+    throw_plate,
     torque,
     torque_at_force,
     torque_derivative,
@@ -69,6 +75,8 @@ __all__ = [
     "simulate_throw", "simulate_throw_si", "stop_time", "trajectory", "stop_results", "StopResults",
     "project_to_limit_set", "LimitProjection", "impulse_friction", "spring_history_friction",
     "FrictionResult",
+    "PolygonPatch", "PatchShape", "friction_wrench", "PlanarWrench", "friction_dissipation",
+    "PatchDissipation", "throw_plate", "PlateThrow", "PlateEnding",
 ]
 
 
@@ -215,3 +223,40 @@ def spring_history_friction(profile, displacement, twist, displacement_increment
     return _SpringResult(_core._spring_history_friction(
         profile, displacement, twist, curve_ratio, displacement_increment, twist_increment,
         tangential_stiffness, twisting_stiffness, radius, normal_force, friction_coefficient))
+
+
+class PlanarWrench(_NamedTuple):
+    """A patch's friction wrench per unit mu N: force (..., 2) and torque (...)
+    about the patch origin (a tuple: force, torque = friction_wrench(...))."""
+
+    force: _np.ndarray
+    torque: _np.ndarray
+
+
+class PatchDissipation(_NamedTuple):
+    """A patch's dissipation D per unit mu N (...), its gradient (..., 3) in
+    (v_x, v_y, omega), which is minus the wrench, and its Hessian (..., 3, 3)."""
+
+    value: _np.ndarray
+    gradient: _np.ndarray
+    hessian: _np.ndarray
+
+
+def friction_wrench(patch, velocity, spin):
+    """The exact friction wrench of a PolygonPatch moving with planar twists.
+
+    velocity (..., 2): the velocity of the patch origin; spin (...): the
+    angular velocity (counter-clockwise positive); broadcast together.
+    Returns PlanarWrench(force (..., 2), torque (...)) per unit mu N, the
+    torque about the patch origin in the vertices' length unit.  A zero twist
+    (v = 0 and omega = 0) or a non-finite component raises ValueError."""
+    return PlanarWrench(*_core._friction_wrench(patch, velocity, spin))
+
+
+def friction_dissipation(patch, velocity, spin):
+    """The dissipation D = integral of p |u| dA per unit mu N of a PolygonPatch
+    at planar twists (as friction_wrench), with its gradient in (v_x, v_y,
+    omega), -(F_x, F_y, tau), and its Hessian (+inf in every entry where it
+    diverges: a line or point patch pivoting about one of its points).
+    Returns PatchDissipation(value (...), gradient (..., 3), hessian (..., 3, 3))."""
+    return PatchDissipation(*_core._friction_dissipation(patch, velocity, spin))

@@ -22,59 +22,6 @@ namespace spinslide_python {
 
 namespace {
 
-using contiguous = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-// The inputs broadcast together, each with `trailing` fixed trailing
-// dimensions (2 for a vector, 3×3 for a matrix), as contiguous float64.
-struct broadcast {
-  std::vector<contiguous> arrays;
-  std::vector<py::ssize_t> shape;  // the contacts' shape (without the trailing dimensions)
-  std::size_t count = 1;
-};
-
-broadcast broadcast_inputs(const std::vector<std::pair<py::handle, int>>& inputs,
-                           const std::vector<const char*>& names) {
-  // Each array's leading (contact) dimensions, broadcast together.
-  py::module_ np = py::module_::import("numpy");
-  std::vector<py::array> arrays;
-  py::list leading;
-  for (std::size_t k = 0; k < inputs.size(); ++k) {
-    py::array a = as_array(inputs[k].first, names[k]);
-    const int trailing = inputs[k].second;
-    if (a.ndim() < trailing)
-      throw py::value_error(std::string(names[k]) + " must have " + std::to_string(trailing) +
-                            " trailing dimension(s) (a vector is (..., 2), a matrix (..., 3, 3))");
-    arrays.push_back(a);
-    py::list s;
-    for (py::ssize_t i = 0; i < a.ndim() - trailing; ++i) s.append(a.shape(i));
-    leading.append(py::tuple(s));
-  }
-  const py::tuple shape = np.attr("broadcast_shapes")(*leading);
-  broadcast out;
-  for (const auto& d : shape) out.shape.push_back(d.cast<py::ssize_t>());
-  for (const auto n : out.shape) out.count *= static_cast<std::size_t>(n);
-  for (std::size_t k = 0; k < arrays.size(); ++k) {
-    py::list full(shape);
-    for (py::ssize_t i = arrays[k].ndim() - inputs[k].second; i < arrays[k].ndim(); ++i)
-      full.append(arrays[k].shape(i));
-    out.arrays.push_back(contiguous::ensure(
-        np.attr("ascontiguousarray")(np.attr("broadcast_to")(arrays[k], py::tuple(full)))));
-  }
-  return out;
-}
-
-std::vector<py::ssize_t> with(std::vector<py::ssize_t> shape,
-                              std::initializer_list<py::ssize_t> t) {
-  shape.insert(shape.end(), t);
-  return shape;
-}
-
-// A result array (or a scalar where the contacts' shape is ()).
-py::object finish(py::array a, bool scalar) {
-  if (scalar) return a[py::tuple()];
-  return py::object(std::move(a));
-}
-
 // What a projection or a law step returns for each contact: the force (a
 // magnitude, or a 2-vector for the laws), the torque, whether it sticks and
 // the slip's ratio.
