@@ -30,6 +30,7 @@ from ._core import (  # noqa: F401  (re-exported)
     Hertz,
     PatchShape,
     PlateEnding,
+    PlateFixedPoint,
     PlateThrow,
     PolygonPatch,
     Profile,
@@ -56,6 +57,7 @@ from ._core import (  # noqa: F401  (re-exported)
     terminal_motion,
     terminal_ratio,
     terminal_window,
+    plate_terminal_points,
     throw_plate,
     torque,
     torque_at_force,
@@ -76,7 +78,7 @@ __all__ = [
     "project_to_limit_set", "LimitProjection", "impulse_friction", "spring_history_friction",
     "FrictionResult",
     "PolygonPatch", "PatchShape", "friction_wrench", "PlanarWrench", "friction_dissipation",
-    "PatchDissipation", "throw_plate", "PlateThrow", "PlateEnding",
+    "PatchDissipation", "throw_plate", "PlateThrow", "PlateEnding", "plate_terminal_points", "PlateFixedPoint",
 ]
 
 

@@ -3,11 +3,14 @@
 //  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
 //
 // A flat plate thrown on a plane (docs/plate_dynamics.md): throw_plate, its
-// path as numpy arrays.
+// path as numpy arrays, and plate_terminal_points.
 #include "arrays.hpp"
 #include "bindings.hpp"
 
+#include <pybind11/stl.h>
+
 #include <spinslide/motion/plate_motion.hpp>
+#include <spinslide/motion/plate_terminal.hpp>
 #include <spinslide/motion/plate_throw.hpp>
 
 #include <array>
@@ -97,6 +100,42 @@ void bind_plates(py::module_& m) {
                ", distance=" + std::string(py::str(py::float_(r.distance))) +
                ", rotation=" + std::string(py::str(py::float_(r.rotation))) + ")";
       });
+  using fixed = spinslide::plate_fixed_point<double>;
+  py::class_<fixed>(m, "PlateFixedPoint",
+                    "A fixed point of a plate's direction flow, with ω > 0 (its mirror with "
+                    "ω < 0 is the same point with the slip reversed).")
+      .def_readonly("ratio", &fixed::ratio, "ε* = |u|/(ℓω), ℓ = patch.radius")
+      .def_readonly("direction", &fixed::direction,
+                    "φ*, the slip's angle in the body frame (0 at ε* = 0)")
+      .def_property_readonly(
+          "exponents", [](const fixed& f) { return vector_array(f.exponents); },
+          "λ₁ ≤ λ₂: the direction's deviation ∝ (time left)^λ")
+      .def_readonly("stable", &fixed::stable,
+                    "both exponents > 0: the throws that reach it end here")
+      .def_property_readonly(
+          "twist",
+          [](const fixed& f) {
+            py::array_t<double> a(3);
+            for (py::ssize_t i = 0; i < 3; ++i) a.mutable_at(i) = f.twist[std::size_t(i)];
+            return a;
+          },
+          "n = (u, kω)/|(u, kω)|")
+      .def("__repr__", [](const fixed& f) {
+        return "PlateFixedPoint(ratio=" + std::string(py::str(py::float_(f.ratio))) +
+               ", direction=" + std::string(py::str(py::float_(f.direction))) +
+               ", stable=" + (f.stable ? "True" : "False") + ")";
+      });
+  m.def(
+      "plate_terminal_points",
+      [](const spinslide::polygon_patch<double>& face, double k) {
+        py::gil_scoped_release release;
+        return spinslide::plate_terminal_points(face, spinslide::gyration_radius<double>{k});
+      },
+      py::arg("patch"), py::arg("gyration_radius"),
+      "The fixed points with ω > 0 of the direction flow of a plate with this contact face "
+      "(an area patch) and radius of gyration k, where (F, τ/k) is antiparallel to (u, kω): "
+      "how its throws can end (docs/plate_dynamics.md).  A list of PlateFixedPoint.  k not "
+      "finite and > 0 raises ValueError.");
   m.def("throw_plate", &throw_it, py::arg("patch"), py::kw_only(), py::arg("gyration_radius"),
         py::arg("friction_coefficient"), py::arg("gravity"), py::arg("velocity"), py::arg("spin"),
         py::arg("angle") = 0.0,

@@ -226,3 +226,29 @@ def test_throw_plate_exact_limits():
     with pytest.raises(ValueError, match="gyration_radius"):
         spinslide.throw_plate(square, gyration_radius=-1.0, friction_coefficient=mu, gravity=g,
                               velocity=(1.0, 0.0), spin=0.0)
+
+
+def test_plate_terminal_points_are_where_the_wrench_opposes_the_twist():
+    # A uniform square lamina (k² = L²/6): at each fixed point (F, τ/k) is
+    # antiparallel to n = (u, kω) (docs/plate_dynamics.md), checked by dblquad.
+    a = 0.1
+    k = math.sqrt((2 * a) ** 2 / 6)
+    square = spinslide.PolygonPatch([(-a, -a), (a, -a), (a, a), (-a, a)])
+    points = spinslide.plate_terminal_points(square, gyration_radius=k)
+    stable = [p for p in points if p.stable]
+    assert stable and all(p.ratio > 0 for p in stable)
+    for p in points:
+        n = p.twist
+        assert np.linalg.norm(n) == pytest.approx(1.0, rel=1e-14)
+        v, w = n[:2], n[2] / k
+        fx, fy, tau, _ = quad_wrench(lambda x, y: 1 / (4 * a * a), v, w, a, a)
+        g = np.array([fx, fy, tau / k])
+        np.testing.assert_allclose(g / np.linalg.norm(g), -n, atol=1e-9)
+        if p.ratio > 0:
+            assert p.ratio == pytest.approx(np.hypot(*v) / (square.radius * w), rel=1e-12)
+            assert p.direction == pytest.approx(math.atan2(v[1], v[0]), abs=1e-12)
+    # The stable ones slip along a diagonal (the square's symmetry).
+    for p in stable:
+        assert math.degrees(p.direction) % 90 == pytest.approx(45, abs=1e-6)
+    with pytest.raises(ValueError, match="gyration_radius"):
+        spinslide.plate_terminal_points(square, gyration_radius=0.0)
