@@ -14,10 +14,11 @@ for inertia not to matter, the box moves with the twist w = (v_x, v_y, omega)
 whose friction wrench balances it, -grad D(w) = -lambda (0, 1, s): the
 normal of the limit surface at that load.
 
-- The exact model finds w as the minimum of the dissipation D(w) on the plane
-  (0, 1, s) . w = 1 (there grad D = lambda (0, 1, s), and lambda = D):
-  scipy's trust-region Newton on spinslide.friction_dissipation's value,
-  gradient and Hessian, then the zero of the gradient along the plane.
+- The exact model takes w from the limit surface's inverse map,
+  spinslide.limit_surface_twist: the twist whose friction wrench is the
+  surface's point on the ray of -(0, 1, s).  (The test checks it against
+  scipy's minimum of D(w) on the plane (0, 1, s) . w = 1, where
+  grad D = lambda (0, 1, s) and lambda = D.)
 - The ellipsoid model (Howe and Cutkosky; Lynch, Maruyama and Mason) takes the
   limit surface F^T H F = 1 with H = diag(1/f_max^2, 1/f_max^2, 1/m_max^2),
   f_max = 1 (pure translation) and m_max the torque of a pure spin about the
@@ -54,31 +55,12 @@ def spin_moment(patch):
 
 def exact_twist(patch, load):
     """The twist (v_x, v_y, omega) whose friction wrench balances `load`
-    (F_x, F_y, tau), scaled so that load . w = 1: the minimum of D on that plane."""
-    d = np.asarray(load, float)
-    basis = np.linalg.svd(d[None, :])[2][1:].T  # the plane's directions (3 x 2)
-    w0 = d / (d @ d)
-
-    def twist(z):
-        return w0 + basis @ z
-
-    def evaluate(z):
-        w = twist(z)
-        return spinslide.friction_dissipation(patch, w[:2], w[2])
-
-    def gradient(z):
-        return basis.T @ evaluate(z).gradient
-
-    def hessian(z):
-        return basis.T @ evaluate(z).hessian @ basis
-
-    start = optimize.minimize(lambda z: float(evaluate(z).value), np.zeros(2), jac=gradient,
-                              hess=hessian, method="trust-exact", options={"gtol": 1e-14})
-    # D is flat at its minimum: its value pins the twist only to about the
-    # square root of the rounding; the gradient's zero (Newton's method from
-    # there, with the exact Hessian) pins it to the rounding itself.
-    result = optimize.root(gradient, start.x, jac=hessian, method="hybr", options={"xtol": 1e-15})
-    return twist(result.x)
+    (F_x, F_y, tau), scaled so that load . w = 1: the limit surface's inverse
+    map at the friction wrench -load."""
+    load = np.asarray(load, float)
+    point = spinslide.limit_surface_twist(patch, -load[:2], -load[2])
+    w = np.array([point.velocity[0], point.velocity[1], point.spin])
+    return w / (load @ w)
 
 
 def ellipsoid_twist(load, m_max, f_max=1.0):

@@ -124,7 +124,6 @@ class LimitProjection:
     sticking: Union[np.bool_, npt.NDArray[np.bool_]]
     ratio: Union[np.float64, npt.NDArray[np.float64]]
 
-def project_to_limit_set(profile: Profile, force: npt.ArrayLike, torque: npt.ArrayLike, torque_weight: npt.ArrayLike) -> LimitProjection: ...
 
 class FrictionResult:
     force: npt.NDArray[np.float64]
@@ -135,7 +134,6 @@ class FrictionResult:
     twist: Union[np.float64, npt.NDArray[np.float64]]
     curve_ratio: Union[np.float64, npt.NDArray[np.float64]]
 
-def impulse_friction(profile: Profile, velocity: npt.ArrayLike, spin: npt.ArrayLike, inverse_mass: npt.ArrayLike, radius: npt.ArrayLike, normal_impulse: npt.ArrayLike, friction_coefficient: npt.ArrayLike, start_ratio: npt.ArrayLike = 0.0) -> FrictionResult: ...
 def spring_history_friction(profile: Profile, displacement: npt.ArrayLike, twist: npt.ArrayLike, displacement_increment: npt.ArrayLike, twist_increment: npt.ArrayLike, tangential_stiffness: npt.ArrayLike, twisting_stiffness: npt.ArrayLike, radius: npt.ArrayLike, normal_force: npt.ArrayLike, friction_coefficient: npt.ArrayLike, curve_ratio: npt.ArrayLike = 0.0) -> FrictionResult: ...
 
 class PatchShape(enum.Enum):
@@ -225,3 +223,28 @@ class PlateFixedPoint:
     def twist(self) -> npt.NDArray[np.float64]: ...
 
 def plate_terminal_points(patch: PolygonPatch, gyration_radius: float) -> List[PlateFixedPoint]: ...
+
+class PatchProjection:
+    force: npt.NDArray[np.float64]
+    torque: Union[np.float64, npt.NDArray[np.float64]]
+    sticking: Union[np.bool_, npt.NDArray[np.bool_]]
+    ratio: Union[np.float64, npt.NDArray[np.float64]]
+    slip_velocity: npt.NDArray[np.float64]
+    slip_spin: Union[np.float64, npt.NDArray[np.float64]]
+
+class PatchImpulse(PatchProjection): ...
+
+class LimitSurfacePoint:
+    velocity: npt.NDArray[np.float64]
+    spin: Union[np.float64, npt.NDArray[np.float64]]
+    gauge: Union[np.float64, npt.NDArray[np.float64]]
+
+@overload
+def project_to_limit_set(profile: Profile, force: npt.ArrayLike, torque: npt.ArrayLike, torque_weight: npt.ArrayLike) -> LimitProjection: ...
+@overload
+def project_to_limit_set(profile: PolygonPatch, force: npt.ArrayLike, torque: npt.ArrayLike, torque_weight: Optional[npt.ArrayLike] = None, *, metric: Optional[npt.ArrayLike] = None, start_velocity: npt.ArrayLike = (0.0, 0.0), start_spin: npt.ArrayLike = 0.0) -> PatchProjection: ...
+def limit_surface_twist(patch: PolygonPatch, force: npt.ArrayLike, torque: npt.ArrayLike) -> LimitSurfacePoint: ...
+@overload
+def impulse_friction(profile: Profile, velocity: npt.ArrayLike, spin: npt.ArrayLike, inverse_mass: npt.ArrayLike, radius: npt.ArrayLike, normal_impulse: npt.ArrayLike, friction_coefficient: npt.ArrayLike, start_ratio: npt.ArrayLike = 0.0) -> FrictionResult: ...
+@overload
+def impulse_friction(profile: PolygonPatch, velocity: npt.ArrayLike, spin: npt.ArrayLike, inverse_mass: npt.ArrayLike, *, normal_impulse: npt.ArrayLike, friction_coefficient: npt.ArrayLike, start_velocity: npt.ArrayLike = (0.0, 0.0), start_spin: npt.ArrayLike = 0.0) -> PatchImpulse: ...

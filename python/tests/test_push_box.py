@@ -2,8 +2,9 @@
 #  Distributed under the Boost Software License, Version 1.0.
 #  (See accompanying file LICENSE or copy at http://www.boost.org/LICENSE_1_0.txt)
 """The push example (examples/python/push_box.py) against references that do
-not use the library: the wrench of its exact twists by scipy's dblquad of
--p û over the rectangle (it must balance the push), the small-offset limit
+not use the library's inverse map: the wrench of its exact twists by scipy's
+dblquad of -p û over the rectangle (it must balance the push), scipy's
+minimum of the dissipation on the push's plane, the small-offset limit
 ω/v → s/∬ p y² from the expansion of D about pure translation, the rectangle's
 m_max in closed form for the ellipsoid model, the pushed path against the
 contact's kinematics, and the printed table."""
@@ -18,6 +19,8 @@ import numpy as np
 import pytest
 
 import spinslide
+from scipy import optimize
+
 from conftest import SOURCE, quad_wrench
 
 a, b = 0.15, 0.10
@@ -39,6 +42,41 @@ def rectangle_spin_moment(a, b):
     d = math.hypot(a, b)
     quarter = (2 * a * b * d + a**3 * math.log((b + d) / a) + b**3 * math.log((a + d) / b)) / 6
     return quarter / (a * b)
+
+
+def minimum_dissipation_twist(patch, load):
+    """The twist w with load . w = 1 of least dissipation D(w) (there
+    grad D = lambda load, lambda = D): scipy's trust-region Newton on
+    friction_dissipation's value, gradient and Hessian in the plane, then the
+    zero of the gradient along it (D is flat at its minimum: its value pins w
+    only to about the square root of the rounding, its gradient to the rounding)."""
+    d = np.asarray(load, float)
+    basis = np.linalg.svd(d[None, :])[2][1:].T  # the plane's directions (3 x 2)
+    w0 = d / (d @ d)
+
+    def evaluate(z):
+        w = w0 + basis @ z
+        return spinslide.friction_dissipation(patch, w[:2], w[2])
+
+    def gradient(z):
+        return basis.T @ evaluate(z).gradient
+
+    def hessian(z):
+        return basis.T @ evaluate(z).hessian @ basis
+
+    start = optimize.minimize(lambda z: float(evaluate(z).value), np.zeros(2), jac=gradient,
+                              hess=hessian, method="trust-exact", options={"gtol": 1e-14})
+    root = optimize.root(gradient, start.x, jac=hessian, method="hybr", options={"xtol": 1e-15})
+    return w0 + basis @ root.x
+
+
+@pytest.mark.parametrize("offset", [1e-3, 0.1, 0.5, 0.9, 1.0])
+def test_inverse_map_is_the_least_dissipation_twist(offset):
+    load = (0.0, 1.0, offset * a)
+    exact = push_box.exact_twist(PATCH, load)
+    reference = minimum_dissipation_twist(PATCH, load)
+    np.testing.assert_allclose(exact[:2], reference[:2], rtol=0, atol=1e-12)
+    assert exact[2] * a == pytest.approx(reference[2] * a, abs=1e-12)
 
 
 @pytest.mark.parametrize("offset", [0.1, 0.5, 1.0])
