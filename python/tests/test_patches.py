@@ -243,12 +243,12 @@ def test_plate_terminal_points_are_where_the_wrench_opposes_the_twist():
         v, w = n[:2], n[2] / k
         fx, fy, tau, _ = quad_wrench(lambda x, y: 1 / (4 * a * a), v, w, a, a)
         g = np.array([fx, fy, tau / k])
-        np.testing.assert_allclose(g / np.linalg.norm(g), -n, atol=1e-9)
+        np.testing.assert_allclose(g / np.linalg.norm(g), -n, atol=1e-12)  # measured: 3.3e-16
         if p.ratio > 0:
             assert p.ratio == pytest.approx(np.hypot(*v) / (square.radius * w), rel=1e-12)
             assert p.direction == pytest.approx(math.atan2(v[1], v[0]), abs=1e-12)
     # The stable ones slip along a diagonal (the square's symmetry).
     for p in stable:
-        assert math.degrees(p.direction) % 90 == pytest.approx(45, abs=1e-6)
+        assert math.degrees(p.direction) % 90 == pytest.approx(45, abs=1e-9)
     with pytest.raises(ValueError, match="gyration_radius"):
         spinslide.plate_terminal_points(square, gyration_radius=0.0)
