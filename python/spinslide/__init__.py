@@ -78,7 +78,8 @@ __all__ = [
     "project_to_limit_set", "LimitProjection", "impulse_friction", "spring_history_friction",
     "FrictionResult",
     "PolygonPatch", "PatchShape", "friction_wrench", "PlanarWrench", "friction_dissipation",
-    "PatchDissipation", "throw_plate", "PlateThrow", "PlateEnding", "plate_terminal_points", "PlateFixedPoint",
+    "PatchDissipation", "throw_plate", "PlateThrow", "PlateEnding", "plate_terminal_points",
+    "PlateFixedPoint",
     "limit_surface_twist", "LimitSurfacePoint", "PatchProjection", "PatchImpulse",
 ]
 
