@@ -134,7 +134,7 @@ patch_matrix<Real> patch_dissipation_hessian(const polygon_patch<Real>& p,
   if (w.omega == 0) return sliding_hessian(p, w);
   const auto& z0 = p.pressure_origin();
   const Real qx = w.omega * z0[0] + w.velocity[1], qy = w.omega * z0[1] - w.velocity[0];
-  if (boost::math::hypot(qx, qy) >= multipole_crossover<Real>() * fabs(w.omega) * p.loaded_radius())
+  if (boost::math::hypot(qx, qy) >= far_crossover<Real>() * fabs(w.omega) * p.loaded_radius())
     return far_hessian(p, w);
   const point2<Real> c{-w.velocity[1] / w.omega, w.velocity[0] / w.omega};
   const Real alpha = p.pressure_at_origin() - dot(p.pressure_gradient(), z0);

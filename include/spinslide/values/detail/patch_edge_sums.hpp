@@ -12,7 +12,7 @@
 ///   Λ = ∫ ds/ρ = asinh(s₁/|h|) − asinh(s₀/|h|).
 /// The sums cancel as |c| grows (the force loses ~|c|/ℓ, the torque
 /// ~(|c|/ℓ)²); the caller uses them only for |c − z₀| < 4ρ₀
-/// (patch_multipole.hpp beyond).
+/// (patch_far_field.hpp beyond).
 
 #ifndef SPINSLIDE_VALUES_DETAIL_PATCH_EDGE_SUMS_HPP
 #define SPINSLIDE_VALUES_DETAIL_PATCH_EDGE_SUMS_HPP
