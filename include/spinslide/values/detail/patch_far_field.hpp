@@ -17,15 +17,18 @@
 ///   A₂ = ∫ t² u⁻¹ = (2/15) z̄³ (3u² + 9u + 8)/(u+1)³,
 ///   B₀ = ∫ u = ⅔ z̄ (u² + u + 1)/(u+1),  B₁ = ∫ t u = (2/15) z̄² (3u³ + 6u² + 4u + 2)/(u+1)²,
 /// none of them divided by W (ω → 0 is continuous) and none cancelling: F is
-/// O(|z|²) on each edge, the result O(area).  F is analytic along each edge
+/// O(|z|²) (S) or O(|z|³) (T) on each edge, the result O(area).  F is analytic along each edge
 /// but at the branch points z = −1/W (the centre) and its image; on the
 /// edge z = m + x d, x ∈ [−1, 1], the centre sits at x_c = (−1/W − m)/d, so
 /// F is analytic inside the Bernstein ellipse through x_c, of parameter
 /// ϱ = a + √(a² − 1), 2a = |x_c − 1| + |x_c + 1|, and n-point Gauss–Legendre
 /// errs by O(ϱ^{−2n}) (Trefethen, Approximation Theory and Approximation
-/// Practice, Thm. 19.3): each edge takes the fewest of Boost's rules with
-/// ϱ^{2n} ≥ 2^(digits + 16) (16 bits for the bound's constant and the size of F
-/// on the ellipse; the reference rows from 4.001 ρ₀ to 2·10⁷ sizes test it).
+/// Practice, Thm. 19.3), times the size of F on the ellipse relative to the
+/// result, ~R⁴ (F's terms of degree j in x are ~R⁴(|d|/R)^j; without it the
+/// reference rows at 10³ sizes lost 5e-14): each edge takes the fewest of
+/// far_rule_sizes with ϱ^{2n} ≥ 2^(digits + 8) R⁴ (8 bits for the bound's
+/// constant; with 0 or 16 no reference row, 4.001 ρ₀ to 2·10⁷ sizes, moves
+/// beyond 2e-16).
 /// A segment is the same along itself, with v/u = (1 + ζ)/|1 + ζ| and v u = |1 + ζ|.
 
 #ifndef SPINSLIDE_VALUES_DETAIL_PATCH_FAR_FIELD_HPP
@@ -89,9 +92,11 @@ void gauss_nodes(F& f) {
   }
 }
 
-/// The rule sizes used (Boost tabulates 7 to 30 points for the built-in
-/// types; the others are computed once on first use).
-constexpr std::array<unsigned, 12> far_rule_sizes{3, 4, 5, 7, 10, 15, 20, 25, 30, 40, 60, 90};
+/// The rule sizes used (Boost tabulates 7, 10, 15, 20, 25 and 30 points for
+/// the built-in types; the others are computed once, on first use): dense up
+/// to 16, where most edges land, so that few nodes are spent beyond the need.
+constexpr std::array<unsigned, 20> far_rule_sizes{3,  4,  5,  6,  7,  8,  9,  10, 11, 12,
+                                                  13, 14, 15, 16, 20, 25, 30, 40, 60, 90};
 
 /// Calls f on the rule far_rule_sizes[k].
 template <class Real, class F>
@@ -104,20 +109,36 @@ void with_far_rule(std::size_t k, F& f) {
     case 2:
       return gauss_nodes<Real, 5>(f);
     case 3:
-      return gauss_nodes<Real, 7>(f);
+      return gauss_nodes<Real, 6>(f);
     case 4:
-      return gauss_nodes<Real, 10>(f);
+      return gauss_nodes<Real, 7>(f);
     case 5:
-      return gauss_nodes<Real, 15>(f);
+      return gauss_nodes<Real, 8>(f);
     case 6:
-      return gauss_nodes<Real, 20>(f);
+      return gauss_nodes<Real, 9>(f);
     case 7:
-      return gauss_nodes<Real, 25>(f);
+      return gauss_nodes<Real, 10>(f);
     case 8:
-      return gauss_nodes<Real, 30>(f);
+      return gauss_nodes<Real, 11>(f);
     case 9:
-      return gauss_nodes<Real, 40>(f);
+      return gauss_nodes<Real, 12>(f);
     case 10:
+      return gauss_nodes<Real, 13>(f);
+    case 11:
+      return gauss_nodes<Real, 14>(f);
+    case 12:
+      return gauss_nodes<Real, 15>(f);
+    case 13:
+      return gauss_nodes<Real, 16>(f);
+    case 14:
+      return gauss_nodes<Real, 20>(f);
+    case 15:
+      return gauss_nodes<Real, 25>(f);
+    case 16:
+      return gauss_nodes<Real, 30>(f);
+    case 17:
+      return gauss_nodes<Real, 40>(f);
+    case 18:
       return gauss_nodes<Real, 60>(f);
     default:
       return gauss_nodes<Real, 90>(f);
@@ -125,14 +146,22 @@ void with_far_rule(std::size_t k, F& f) {
 }
 
 /// How many extra bits the rule must resolve (below).
-constexpr double far_rule_margin_bits = 16;
+constexpr double far_rule_margin_bits = 8;
+
+/// ln(2^(digits + margin) R⁴), R = 1/|W|: what ϱ^{2n} must reach (far_rule).
+template <class Real>
+double far_rule_target(const cplx<Real>& W) {
+  const double w = static_cast<double>(W.re * W.re + W.im * W.im);
+  return (std::numeric_limits<Real>::digits + far_rule_margin_bits) * 0.6931471805599453 -
+         2 * std::log(w);
+}
 
 /// The rule for the edge z = m + x d when the centre is at −1/W: x_c =
 /// −(1 + W m)/(W d), ϱ its Bernstein ellipse (above); the fewest of
-/// far_rule_sizes with ϱ^{2n} ≥ 2^(digits + margin) R⁴, R = 1/|W| (the terms
+/// far_rule_sizes with ϱ^{2n} ≥ 2^(digits + margin) R⁴ = e^target (the terms
 /// of F of degree j in x are ~ R⁴ (|d|/R)^j: F is O(|z|⁴) on the ellipse).
 template <class Real>
-std::size_t far_rule(const cplx<Real>& W, const cplx<Real>& m, const cplx<Real>& d) {
+std::size_t far_rule(const cplx<Real>& W, const cplx<Real>& m, const cplx<Real>& d, double target) {
   BOOST_MATH_STD_USING
   const cplx<Real> num{-(1 + W.re * m.re - W.im * m.im), -(W.re * m.im + W.im * m.re)};
   const cplx<Real> den = W * d;
@@ -142,14 +171,10 @@ std::size_t far_rule(const cplx<Real>& W, const cplx<Real>& m, const cplx<Real>&
              plus1 = sqrt((num.re + den.re) * (num.re + den.re) +
                           (num.im + den.im) * (num.im + den.im));
   const double a = static_cast<double>((minus1 + plus1) / 2),
-               b = static_cast<double>(sqrt(den.re * den.re + den.im * den.im)),
-               w = static_cast<double>(sqrt(W.re * W.re + W.im * W.im));
-  // ln ϱ = ln(a + √(a² − b²)) − ln b (a/b the semi-axis): no overflow of a/b.
-  const double log_rho = std::log(a + std::sqrt(std::fmax(0.0, (a - b) * (a + b)))) - std::log(b);
-  const double needed =
-      ((std::numeric_limits<Real>::digits + far_rule_margin_bits) * 0.6931471805599453 -
-       4 * std::log(w)) /
-      (2 * log_rho);
+               b = static_cast<double>(sqrt(den.re * den.re + den.im * den.im));
+  // ϱ = (a + √(a² − b²))/b (a/b the semi-axis).
+  const double log_rho = std::log((a + std::sqrt(std::fmax(0.0, (a - b) * (a + b)))) / b);
+  const double needed = target / (2 * log_rho);
   // W d underflowing (the centre at infinity: ϱ = ∞, needed NaN or 0) takes the smallest rule.
   if (!(needed > far_rule_sizes[0])) return 0;
   std::size_t k = 0;
@@ -231,6 +256,7 @@ far_sums<Real> polygon_far_integrals(const vertex_list<Real, N>& poly, const poi
   const cplx<Real> half_b{f.b.re / 2, f.b.im / 2};
   far_node<Real> node{f, half_b, conj(half_b), f.b.re == 0 && f.b.im == 0, with_dissipation};
   const std::size_t n = poly.size();
+  const double target = far_rule_target(f.W);
   for (std::size_t i = 0; i < n; ++i) {
     const point2<Real>& next = poly.next(i);
     const cplx<Real> A{(poly[i][0] - z0[0]) / rho0, (poly[i][1] - z0[1]) / rho0};
@@ -240,7 +266,7 @@ far_sums<Real> polygon_far_integrals(const vertex_list<Real, N>& poly, const poi
     auto at = [&](const Real& x, const Real& w) {
       node({mid.re + x * d.re, mid.im + x * d.im}, {w * d.re, w * d.im});
     };
-    with_far_rule<Real>(far_rule(f.W, mid, d), at);
+    with_far_rule<Real>(far_rule(f.W, mid, d, target), at);
   }
   // ∬ f dA = (1/2i) ∮ F dz: X/(2i) = (Im X, −Re X)/2.
   return {{node.S.im / 2, -node.S.re / 2},
@@ -272,7 +298,7 @@ far_sums<Real> segment_far_integrals(const point2<Real>& x0, const point2<Real>&
     T = T + conj(z) * pg;
     if (with_dissipation) SD = SD + cplx<Real>{pw * m, Real(0)};
   };
-  with_far_rule<Real>(far_rule(f.W, mid, d), node);
+  with_far_rule<Real>(far_rule(f.W, mid, d, far_rule_target(f.W)), node);
   return {S, T, SD};
 }
 
