@@ -256,6 +256,7 @@ void patch_paths() {
   const std::vector<point> sole{{-0.11, -0.05}, {0.11, -0.05}, {0.11, 0.05}, {-0.11, 0.05}};
   const auto eps = ratios<double>();
   std::vector<planar_twist<double>> twists;
+  twists.reserve(64);
   for (int i = 0; i < 64; ++i)
     twists.push_back({{0.11 * eps[i] * std::cos(2.4 * i), 0.11 * eps[i] * std::sin(2.4 * i)},
                       i % 2 ? 1.0 : -1.0});
@@ -266,8 +267,11 @@ void patch_paths() {
   count("patch_wrench.disk.double.linear",
         [&](int i) { return friction_wrench(linear, twists[i]).torque; });
   std::vector<point> centres;
-  for (int i = 0; i < 64; ++i)
-    centres.push_back({0.06 + 0.04 * (i % 8) / 7.0, 0.015 + 0.025 * (i / 8) / 7.0});
+  centres.reserve(64);
+  for (int i = 0; i < 64; ++i) {
+    const int column = i % 8, row = i / 8;
+    centres.push_back({0.06 + 0.04 * column / 7.0, 0.015 + 0.025 * row / 7.0});
+  }
   count("patch_no_tension.disk.double.construction", [&](int i) {
     return polygon_patch<double>(sole, centre_of_pressure<double>{centres[i]}).pressure_at_origin();
   });

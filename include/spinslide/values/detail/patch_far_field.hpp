@@ -246,6 +246,19 @@ struct far_node {
   }
 };
 
+/// Calls f(m, d) for each edge z = m + x d, x ∈ [−1, 1], of the polygon
+/// `poly` in the scaled frame z = (x − z0)/rho0.
+template <class Real, std::size_t N, class F>
+void for_each_far_edge(const vertex_list<Real, N>& poly, const point2<Real>& z0, Real rho0, F&& f) {
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const point2<Real>& next = poly.next(i);
+    const cplx<Real> A{(poly[i][0] - z0[0]) / rho0, (poly[i][1] - z0[1]) / rho0};
+    const cplx<Real> B{(next[0] - z0[0]) / rho0, (next[1] - z0[1]) / rho0};
+    const cplx<Real> d{(B.re - A.re) / 2, (B.im - A.im) / 2};  // dz/dx on [−1, 1]
+    f(cplx<Real>{A.re + d.re, A.im + d.im}, d);
+  }
+}
+
 /// S, T (and S_D if asked) of the polygon `poly` whose scaled vertices are
 /// (x − z0)/rho0: Green's theorem with F = v[(a + b̄z/2)A₀ + (b/2)A₁] for S,
 /// v[(a + b̄z/2)A₁ + (b/2)A₂] for T, v[(a + b̄z/2)B₀ + (b/2)B₁] for S_D (above).
@@ -255,19 +268,13 @@ far_sums<Real> polygon_far_integrals(const vertex_list<Real, N>& poly, const poi
                                      bool with_dissipation = false) {
   const cplx<Real> half_b{f.b.re / 2, f.b.im / 2};
   far_node<Real> node{f, half_b, conj(half_b), f.b.re == 0 && f.b.im == 0, with_dissipation};
-  const std::size_t n = poly.size();
   const double target = far_rule_target(f.W);
-  for (std::size_t i = 0; i < n; ++i) {
-    const point2<Real>& next = poly.next(i);
-    const cplx<Real> A{(poly[i][0] - z0[0]) / rho0, (poly[i][1] - z0[1]) / rho0};
-    const cplx<Real> B{(next[0] - z0[0]) / rho0, (next[1] - z0[1]) / rho0};
-    const cplx<Real> d{(B.re - A.re) / 2, (B.im - A.im) / 2};  // dz/dx on [−1, 1]
-    const cplx<Real> mid{A.re + d.re, A.im + d.im};
+  for_each_far_edge(poly, z0, rho0, [&](const cplx<Real>& mid, const cplx<Real>& d) {
     auto at = [&](const Real& x, const Real& w) {
       node({mid.re + x * d.re, mid.im + x * d.im}, {w * d.re, w * d.im});
     };
     with_far_rule<Real>(far_rule(f.W, mid, d, target), at);
-  }
+  });
   // ∬ f dA = (1/2i) ∮ F dz: X/(2i) = (Im X, −Re X)/2.
   return {{node.S.im / 2, -node.S.re / 2},
           {node.T.im / 2, -node.T.re / 2},
