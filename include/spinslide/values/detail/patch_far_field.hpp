@@ -24,9 +24,10 @@
 /// ϱ = a + √(a² − 1), 2a = |x_c − 1| + |x_c + 1|, and n-point Gauss–Legendre
 /// errs by O(ϱ^{−2n}) (Trefethen, Approximation Theory and Approximation
 /// Practice, Thm. 19.3), times the size of F on the ellipse relative to the
-/// result, ~R⁴ (F's terms of degree j in x are ~R⁴(|d|/R)^j; without it the
+/// result, ~R³ (F is a polynomial of degree 3 in z, z̄ times a series in ζ,
+/// so its terms of degree j in x are ~R³(|d|/R)^j; without it the
 /// reference rows at 10³ sizes lost 5e-14): each edge takes the fewest of
-/// far_rule_sizes with ϱ^{2n} ≥ 2^(digits + 8) R⁴ (8 bits for the bound's
+/// far_rule_sizes with ϱ^{2n} ≥ 2^(digits + 8) R³ (8 bits for the bound's
 /// constant; with 0 or 16 no reference row, 4.001 ρ₀ to 2·10⁷ sizes, moves
 /// beyond 2e-16).
 /// A segment is the same along itself, with v/u = (1 + ζ)/|1 + ζ| and v u = |1 + ζ|.
@@ -148,18 +149,18 @@ void with_far_rule(std::size_t k, F& f) {
 /// How many extra bits the rule must resolve (below).
 constexpr double far_rule_margin_bits = 8;
 
-/// ln(2^(digits + margin) R⁴), R = 1/|W|: what ϱ^{2n} must reach (far_rule).
+/// ln(2^(digits + margin) R³), R = 1/|W|: what ϱ^{2n} must reach (far_rule).
 template <class Real>
 double far_rule_target(const cplx<Real>& W) {
   const double w = static_cast<double>(W.re * W.re + W.im * W.im);
   return (std::numeric_limits<Real>::digits + far_rule_margin_bits) * 0.6931471805599453 -
-         2 * std::log(w);
+         1.5 * std::log(w);
 }
 
 /// The rule for the edge z = m + x d when the centre is at −1/W: x_c =
 /// −(1 + W m)/(W d), ϱ its Bernstein ellipse (above); the fewest of
-/// far_rule_sizes with ϱ^{2n} ≥ 2^(digits + margin) R⁴ = e^target (the terms
-/// of F of degree j in x are ~ R⁴ (|d|/R)^j: F is O(|z|⁴) on the ellipse).
+/// far_rule_sizes with ϱ^{2n} ≥ 2^(digits + margin) R³ = e^target (the terms
+/// of F of degree j in x are ~ R³ (|d|/R)^j).
 template <class Real>
 std::size_t far_rule(const cplx<Real>& W, const cplx<Real>& m, const cplx<Real>& d, double target) {
   BOOST_MATH_STD_USING
@@ -214,33 +215,31 @@ struct far_node {
   bool uniform, with_dissipation;
   cplx<Real> S{Real(0), Real(0)}, T{Real(0), Real(0)}, SD{Real(0), Real(0)};
 
+  // The antiderivatives halved (A₀/2 = g, A₁/2 = g²(u + 2)/3, ...; g = z̄/(u + 1)):
+  // the 2 goes into the 1/2i of Green's theorem.
   void operator()(const cplx<Real>& z, const cplx<Real>& wd) {
-    const cplx<Real> zb = conj(z);
     const cplx<Real> v = far_root(f.W * z), u = conj(v);
-    const cplx<Real> u1{u.re + 1, u.im};
-    const Real n1 = u1.re * u1.re + u1.im * u1.im;
-    const cplx<Real> w{u1.re / n1, -u1.im / n1};  // 1/(u + 1)
-    const cplx<Real> zw = zb * w, zw2 = zw * zw;
-    const cplx<Real> A0 = Real(2) * zw;
-    const cplx<Real> A1 = Real(Real(2) / 3) * (zw2 * cplx<Real>{u.re + 2, u.im});
+    const Real ur = u.re + 1, inverse = 1 / (ur * ur + u.im * u.im);
+    const cplx<Real> g = conj(z) * cplx<Real>{ur * inverse, -u.im * inverse};
+    const cplx<Real> g2 = g * g;
+    const cplx<Real> A1 = (Real(1) / 3) * (g2 * cplx<Real>{u.re + 2, u.im});
     const cplx<Real> lin = cplx<Real>{f.a, Real(0)} + half_bbar * z;
     const cplx<Real> vwd = v * wd;
     if (uniform) {
-      S = S + (lin * A0) * vwd;
+      S = S + (lin * g) * vwd;
       T = T + (lin * A1) * vwd;
     } else {
       const cplx<Real> u2 = u * u;
-      const cplx<Real> A2 = Real(Real(2) / 15) *
-                            (zw2 * zw * cplx<Real>{3 * u2.re + 9 * u.re + 8, 3 * u2.im + 9 * u.im});
-      S = S + (lin * A0 + half_b * A1) * vwd;
+      const cplx<Real> A2 =
+          (Real(1) / 15) * (g2 * g * cplx<Real>{3 * u2.re + 9 * u.re + 8, 3 * u2.im + 9 * u.im});
+      S = S + (lin * g + half_b * A1) * vwd;
       T = T + (lin * A1 + half_b * A2) * vwd;
     }
     if (with_dissipation) {
       const cplx<Real> u2 = u * u, u3 = u2 * u;
-      const cplx<Real> B0 = Real(Real(2) / 3) * (zw * cplx<Real>{u2.re + u.re + 1, u2.im + u.im});
-      const cplx<Real> B1 =
-          Real(Real(2) / 15) * (zw2 * cplx<Real>{3 * u3.re + 6 * u2.re + 4 * u.re + 2,
-                                                 3 * u3.im + 6 * u2.im + 4 * u.im});
+      const cplx<Real> B0 = (Real(1) / 3) * (g * cplx<Real>{u2.re + u.re + 1, u2.im + u.im});
+      const cplx<Real> B1 = (Real(1) / 15) * (g2 * cplx<Real>{3 * u3.re + 6 * u2.re + 4 * u.re + 2,
+                                                              3 * u3.im + 6 * u2.im + 4 * u.im});
       SD = SD + (lin * B0 + half_b * B1) * vwd;
     }
   }
@@ -275,10 +274,8 @@ far_sums<Real> polygon_far_integrals(const vertex_list<Real, N>& poly, const poi
     };
     with_far_rule<Real>(far_rule(f.W, mid, d, target), at);
   });
-  // ∬ f dA = (1/2i) ∮ F dz: X/(2i) = (Im X, −Re X)/2.
-  return {{node.S.im / 2, -node.S.re / 2},
-          {node.T.im / 2, -node.T.re / 2},
-          {node.SD.im / 2, -node.SD.re / 2}};
+  // ∬ f dA = (1/2i) ∮ F dz = (Im X, −Re X) for X = ∮ F/2 dz.
+  return {{node.S.im, -node.S.re}, {node.T.im, -node.T.re}, {node.SD.im, -node.SD.re}};
 }
 
 /// S, T (and S_D) of the segment from x₀ to x₁ under the line density

@@ -21,7 +21,7 @@
 ///   C₃ = ⅖ g⁴(u² + 4u + 5)/u,
 /// beside A₀, A₁, A₂ of patch_far_field.hpp; F = v⁻¹[(a + b̄z/2)A_k + (b/2)A_{k+1}]
 /// (times z for Z₁, Z₂) and v[(a + b̄z/2)C_k + (b/2)C_{k+1}].  The terms of F
-/// reach degree 4 in z: the rule's target is the far field's times R.
+/// reach degree 4 in z, z̄: the rule's target is the far field's times R.
 /// Then θ' = Tθ, v₀ = v + ω ẑ × z₀, and ∇²_θ D = Tᵀ ∇²_θ' D T.
 
 #ifndef SPINSLIDE_VALUES_DETAIL_PATCH_FAR_HESSIAN_HPP
