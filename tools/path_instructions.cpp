@@ -257,15 +257,18 @@ void patch_paths() {
   const auto eps = ratios<double>();
   std::vector<planar_twist<double>> twists;
   twists.reserve(64);
-  for (int i = 0; i < 64; ++i)
-    twists.push_back({{0.11 * eps[i] * std::cos(2.4 * i), 0.11 * eps[i] * std::sin(2.4 * i)},
-                      i % 2 ? 1.0 : -1.0});
+  for (std::size_t i = 0; i < 64; ++i) {
+    const double angle = 2.4 * static_cast<double>(i);
+    twists.push_back(
+        {{0.11 * eps[i] * std::cos(angle), 0.11 * eps[i] * std::sin(angle)}, i % 2 ? 1.0 : -1.0});
+  }
+  auto at = [](int i) { return static_cast<std::size_t>(i); };
   const polygon_patch<double> uniform(sole),
       linear(sole, centre_of_pressure<double>{{0.015, -0.005}});
   count("patch_wrench.disk.double.uniform",
-        [&](int i) { return friction_wrench(uniform, twists[i]).torque; });
+        [&](int i) { return friction_wrench(uniform, twists[at(i)]).torque; });
   count("patch_wrench.disk.double.linear",
-        [&](int i) { return friction_wrench(linear, twists[i]).torque; });
+        [&](int i) { return friction_wrench(linear, twists[at(i)]).torque; });
   std::vector<point> centres;
   centres.reserve(64);
   for (int i = 0; i < 64; ++i) {
@@ -273,7 +276,8 @@ void patch_paths() {
     centres.push_back({0.06 + 0.04 * column / 7.0, 0.015 + 0.025 * row / 7.0});
   }
   count("patch_no_tension.disk.double.construction", [&](int i) {
-    return polygon_patch<double>(sole, centre_of_pressure<double>{centres[i]}).pressure_at_origin();
+    return polygon_patch<double>(sole, centre_of_pressure<double>{centres[at(i)]})
+        .pressure_at_origin();
   });
 }
 
