@@ -207,7 +207,34 @@ cplx<Real> far_root(const cplx<Real>& zeta) {
   return {r, zeta.im / (2 * r)};
 }
 
-/// The contributions of one Gauss node z of a polygon's edge to ∮F dz (weight wd = w·dz/dx).
+/// The Gauss nodes of one edge as arrays: z, the weight w·dz/dx and v =
+/// (1 + ζ)^{1/2}, so that the arithmetic after the square roots vectorizes
+/// (a loop with std::sqrt does not: it may set errno).
+template <class Real>
+struct far_batch {
+  static constexpr std::size_t capacity = 90;  ///< the largest rule
+  std::size_t size = 0;
+  std::array<Real, capacity> zr, zi, wr, wi, vr, vi;
+
+  /// Adds the node z with weight wd.
+  void push(const cplx<Real>& z, const cplx<Real>& wd) {
+    zr[size] = z.re;
+    zi[size] = z.im;
+    wr[size] = wd.re;
+    wi[size] = wd.im;
+    ++size;
+  }
+  /// v at every node.
+  void roots(const cplx<Real>& W) {
+    for (std::size_t i = 0; i < size; ++i) {
+      const cplx<Real> v = far_root(W * cplx<Real>{zr[i], zi[i]});
+      vr[i] = v.re;
+      vi[i] = v.im;
+    }
+  }
+};
+
+/// The contributions of the Gauss nodes of a polygon's edges to ∮F dz.
 template <class Real>
 struct far_node {
   const far_frame<Real>& f;
@@ -216,31 +243,60 @@ struct far_node {
   cplx<Real> S{Real(0), Real(0)}, T{Real(0), Real(0)}, SD{Real(0), Real(0)};
 
   // The antiderivatives halved (A₀/2 = g, A₁/2 = g²(u + 2)/3, ...; g = z̄/(u + 1)):
-  // the 2 goes into the 1/2i of Green's theorem.
-  void operator()(const cplx<Real>& z, const cplx<Real>& wd) {
-    const cplx<Real> v = far_root(f.W * z), u = conj(v);
-    const Real ur = u.re + 1, inverse = 1 / (ur * ur + u.im * u.im);
-    const cplx<Real> g = conj(z) * cplx<Real>{ur * inverse, -u.im * inverse};
-    const cplx<Real> g2 = g * g;
-    const cplx<Real> A1 = (Real(1) / 3) * (g2 * cplx<Real>{u.re + 2, u.im});
-    const cplx<Real> lin = cplx<Real>{f.a, Real(0)} + half_bbar * z;
-    const cplx<Real> vwd = v * wd;
-    if (uniform) {
-      S = S + (lin * g) * vwd;
-      T = T + (lin * A1) * vwd;
-    } else {
-      const cplx<Real> u2 = u * u;
-      const cplx<Real> A2 =
-          (Real(1) / 15) * (g2 * g * cplx<Real>{3 * u2.re + 9 * u.re + 8, 3 * u2.im + 9 * u.im});
-      S = S + (lin * g + half_b * A1) * vwd;
-      T = T + (lin * A1 + half_b * A2) * vwd;
+  // the 2 goes into the 1/2i of Green's theorem.  Each node's terms into
+  // out (S, T, S_D as re, im pairs), in a loop of its own.
+  template <bool Linear, bool Dissipation>
+  void terms(const far_batch<Real>& b,
+             std::array<std::array<Real, far_batch<Real>::capacity>, 6>& out) const {
+    for (std::size_t i = 0; i < b.size; ++i) {
+      const cplx<Real> z{b.zr[i], b.zi[i]}, v{b.vr[i], b.vi[i]}, u = conj(v);
+      const Real ur = u.re + 1, inverse = 1 / (ur * ur + u.im * u.im);
+      const cplx<Real> g = conj(z) * cplx<Real>{ur * inverse, -u.im * inverse};
+      const cplx<Real> g2 = g * g;
+      const cplx<Real> A1 = (Real(1) / 3) * (g2 * cplx<Real>{u.re + 2, u.im});
+      const cplx<Real> lin = cplx<Real>{f.a, Real(0)} + half_bbar * z;
+      const cplx<Real> vwd = v * cplx<Real>{b.wr[i], b.wi[i]};
+      cplx<Real> s = lin * g, t = lin * A1;
+      if (Linear) {
+        const cplx<Real> u2 = u * u;
+        const cplx<Real> A2 =
+            (Real(1) / 15) * (g2 * g * cplx<Real>{3 * u2.re + 9 * u.re + 8, 3 * u2.im + 9 * u.im});
+        s = s + half_b * A1;
+        t = t + half_b * A2;
+      }
+      s = s * vwd;
+      t = t * vwd;
+      out[0][i] = s.re;
+      out[1][i] = s.im;
+      out[2][i] = t.re;
+      out[3][i] = t.im;
+      if (Dissipation) {
+        const cplx<Real> u2 = u * u, u3 = u2 * u;
+        const cplx<Real> B0 = (Real(1) / 3) * (g * cplx<Real>{u2.re + u.re + 1, u2.im + u.im});
+        const cplx<Real> B1 =
+            (Real(1) / 15) * (g2 * cplx<Real>{3 * u3.re + 6 * u2.re + 4 * u.re + 2,
+                                              3 * u3.im + 6 * u2.im + 4 * u.im});
+        const cplx<Real> sd = (lin * B0 + half_b * B1) * vwd;
+        out[4][i] = sd.re;
+        out[5][i] = sd.im;
+      }
     }
+  }
+
+  /// Adds the nodes of one edge (their roots taken).
+  void operator()(const far_batch<Real>& b) {
+    std::array<std::array<Real, far_batch<Real>::capacity>, 6> out;
     if (with_dissipation) {
-      const cplx<Real> u2 = u * u, u3 = u2 * u;
-      const cplx<Real> B0 = (Real(1) / 3) * (g * cplx<Real>{u2.re + u.re + 1, u2.im + u.im});
-      const cplx<Real> B1 = (Real(1) / 15) * (g2 * cplx<Real>{3 * u3.re + 6 * u2.re + 4 * u.re + 2,
-                                                              3 * u3.im + 6 * u2.im + 4 * u.im});
-      SD = SD + (lin * B0 + half_b * B1) * vwd;
+      terms<true, true>(b, out);
+    } else if (uniform) {
+      terms<false, false>(b, out);
+    } else {
+      terms<true, false>(b, out);
+    }
+    for (std::size_t i = 0; i < b.size; ++i) {
+      S = S + cplx<Real>{out[0][i], out[1][i]};
+      T = T + cplx<Real>{out[2][i], out[3][i]};
+      if (with_dissipation) SD = SD + cplx<Real>{out[4][i], out[5][i]};
     }
   }
 };
@@ -268,11 +324,15 @@ far_sums<Real> polygon_far_integrals(const vertex_list<Real, N>& poly, const poi
   const cplx<Real> half_b{f.b.re / 2, f.b.im / 2};
   far_node<Real> node{f, half_b, conj(half_b), f.b.re == 0 && f.b.im == 0, with_dissipation};
   const double target = far_rule_target(f.W);
+  far_batch<Real> batch;
   for_each_far_edge(poly, z0, rho0, [&](const cplx<Real>& mid, const cplx<Real>& d) {
+    batch.size = 0;
     auto at = [&](const Real& x, const Real& w) {
-      node({mid.re + x * d.re, mid.im + x * d.im}, {w * d.re, w * d.im});
+      batch.push({mid.re + x * d.re, mid.im + x * d.im}, {w * d.re, w * d.im});
     };
     with_far_rule<Real>(far_rule(f.W, mid, d, target), at);
+    batch.roots(f.W);
+    node(batch);
   });
   // ∬ f dA = (1/2i) ∮ F dz = (Im X, −Re X) for X = ∮ F/2 dz.
   return {{node.S.im, -node.S.re}, {node.T.im, -node.T.re}, {node.SD.im, -node.SD.re}};
