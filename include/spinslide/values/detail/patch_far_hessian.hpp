@@ -37,36 +37,48 @@ namespace spinslide {
 namespace detail {
 
 /// The six contour sums of the far Hessian (I₀, Z₁, Z₂, N₂, N₃, N₄ before
-/// the factor 1/2i).
+/// the factor 1/2i), an edge's nodes at a time (far_batch: the loop after the
+/// square roots vectorizes).
 template <class Real>
 struct far_hessian_node {
   cplx<Real> a, half_b;
   std::array<cplx<Real>, 6> sum{};
 
-  void operator()(const cplx<Real>& z, const cplx<Real>& W, const cplx<Real>& wd) {
-    const cplx<Real> v = far_root(W * z), u = conj(v);
-    const cplx<Real> u1{u.re + 1, u.im};
-    const Real n1 = u1.re * u1.re + u1.im * u1.im, nu = u.re * u.re + u.im * u.im;
-    const cplx<Real> g = conj(z) * cplx<Real>{u1.re / n1, -u1.im / n1};  // z̄/(u + 1)
-    const cplx<Real> ui{u.re / nu, -u.im / nu}, vi = conj(ui);           // 1/u, 1/v
-    const cplx<Real> g2 = g * g, g3 = g2 * g, u2 = u * u;
-    const cplx<Real> A0 = Real(2) * g, A1 = Real(Real(2) / 3) * (g2 * cplx<Real>{u.re + 2, u.im});
-    const cplx<Real> A2 =
-        Real(Real(2) / 15) * (g3 * cplx<Real>{3 * u2.re + 9 * u.re + 8, 3 * u2.im + 9 * u.im});
-    const cplx<Real> gu = g * ui;
-    const cplx<Real> C0 = Real(2) * gu, C1 = Real(2) * (g * gu);
-    const cplx<Real> C2 = Real(Real(2) / 3) * (g2 * gu * cplx<Real>{u.re + 3, u.im});
-    const cplx<Real> C3 =
-        Real(Real(2) / 5) * (g3 * gu * cplx<Real>{u2.re + 4 * u.re + 5, u2.im + 4 * u.im});
-    const cplx<Real> lin = a + conj(half_b) * z;
-    const cplx<Real> viw = vi * wd, vw = v * wd;
-    const cplx<Real> i0 = (lin * A0 + half_b * A1) * viw;
-    sum[0] = sum[0] + i0;
-    sum[1] = sum[1] + z * i0;
-    sum[2] = sum[2] + z * ((lin * A1 + half_b * A2) * viw);
-    sum[3] = sum[3] + (lin * C0 + half_b * C1) * vw;
-    sum[4] = sum[4] + (lin * C1 + half_b * C2) * vw;
-    sum[5] = sum[5] + (lin * C2 + half_b * C3) * vw;
+  void operator()(const far_batch<Real>& b) {
+    std::array<std::array<Real, far_batch<Real>::capacity>, 12> out;
+    for (std::size_t i = 0; i < b.size; ++i) {
+      const cplx<Real> z{b.zr[i], b.zi[i]}, v{b.vr[i], b.vi[i]}, u = conj(v);
+      const cplx<Real> wd{b.wr[i], b.wi[i]};
+      const cplx<Real> u1{u.re + 1, u.im};
+      const Real n1 = 1 / (u1.re * u1.re + u1.im * u1.im), nu = 1 / (u.re * u.re + u.im * u.im);
+      const cplx<Real> g = conj(z) * cplx<Real>{u1.re * n1, -u1.im * n1};  // z̄/(u + 1)
+      const cplx<Real> ui{u.re * nu, -u.im * nu}, vi = conj(ui);           // 1/u, 1/v
+      const cplx<Real> g2 = g * g, g3 = g2 * g, u2 = u * u;
+      const cplx<Real> A0 = Real(2) * g, A1 = Real(Real(2) / 3) * (g2 * cplx<Real>{u.re + 2, u.im});
+      const cplx<Real> A2 =
+          Real(Real(2) / 15) * (g3 * cplx<Real>{3 * u2.re + 9 * u.re + 8, 3 * u2.im + 9 * u.im});
+      const cplx<Real> gu = g * ui;
+      const cplx<Real> C0 = Real(2) * gu, C1 = Real(2) * (g * gu);
+      const cplx<Real> C2 = Real(Real(2) / 3) * (g2 * gu * cplx<Real>{u.re + 3, u.im});
+      const cplx<Real> C3 =
+          Real(Real(2) / 5) * (g3 * gu * cplx<Real>{u2.re + 4 * u.re + 5, u2.im + 4 * u.im});
+      const cplx<Real> lin = a + conj(half_b) * z;
+      const cplx<Real> viw = vi * wd, vw = v * wd;
+      const cplx<Real> i0 = (lin * A0 + half_b * A1) * viw;
+      const std::array<cplx<Real>, 6> t{i0,
+                                        z * i0,
+                                        z * ((lin * A1 + half_b * A2) * viw),
+                                        (lin * C0 + half_b * C1) * vw,
+                                        (lin * C1 + half_b * C2) * vw,
+                                        (lin * C2 + half_b * C3) * vw};
+      for (std::size_t k = 0; k < 6; ++k) {
+        out[2 * k][i] = t[k].re;
+        out[2 * k + 1][i] = t[k].im;
+      }
+    }
+    for (std::size_t i = 0; i < b.size; ++i)
+      for (std::size_t k = 0; k < 6; ++k)
+        sum[k] = sum[k] + cplx<Real>{out[2 * k][i], out[2 * k + 1][i]};
   }
 };
 
@@ -81,11 +93,15 @@ std::array<std::array<Real, 3>, 3> polygon_far_hessian(const vertex_list<Real, N
   const double target =
       far_rule_target(f.W) -
       std::log(static_cast<double>(f.W.re * f.W.re + f.W.im * f.W.im)) / 2;  // × R
+  far_batch<Real> batch;
   for_each_far_edge(poly, z0, rho0, [&](const cplx<Real>& mid, const cplx<Real>& d) {
+    batch.size = 0;
     auto at = [&](const Real& x, const Real& w) {
-      node({mid.re + x * d.re, mid.im + x * d.im}, f.W, {w * d.re, w * d.im});
+      batch.push({mid.re + x * d.re, mid.im + x * d.im}, {w * d.re, w * d.im});
     };
     with_far_rule<Real>(far_rule(f.W, mid, d, target), at);
+    batch.roots(f.W);
+    node(batch);
   });
   std::array<cplx<Real>, 6> I{};  // ∬ = (1/2i)∮: X/(2i) = (Im X, −Re X)/2
   for (std::size_t k = 0; k < 6; ++k) I[k] = {node.sum[k].im / 2, -node.sum[k].re / 2};
