@@ -173,7 +173,7 @@ patch_matrix<Real> patch_dissipation_hessian(const polygon_patch<Real>& p,
 /// the projections that need all three: the Hessian is in closed form for
 /// an instantaneous centre near the patch (the edge sums, within 4 loaded
 /// radii of its centre), far from an area (the far field's contour
-/// integrals, at about the cost of one more wrench) and for ω = 0; a line
+/// integrals, at about the cost of two more wrenches) and for ω = 0; a line
 /// patch's far Hessian is by central differences of the exact wrench (six
 /// wrenches, about ε^{2/3} relative); +∞ in every entry where it diverges:
 /// a point patch or a line patch pivoting about one of its points.
