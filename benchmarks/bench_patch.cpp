@@ -7,17 +7,18 @@
 // centre from inside the sole to 1e3 sizes away), in random directions and
 // both spin senses: uniform and linear pressure; near centres only (ε in
 // [1e-3, 1]: the edge sums), moderate (ε in [5, 50]: the expansion at high
-// order), far (ε in [1e2, 1e4]); pure sliding (ω = 0); the no-tension pressure built from its
-// centre of pressure (one patch per item); and a tensor Gauss–Legendre
-// quadrature of the same wrench with as many points as it needs for 1e-6
-// and for 1e-10 over a sample of the twists (counted at start-up; the
-// counter `points` says how many).  Baseline: the uniform disk's
+// order), far (ε in [1e2, 1e4]); friction_dissipation over the mixed twists
+// (the wrench and the Hessian at once); pure sliding (ω = 0); the no-tension pressure built from
+// its centre of pressure (one patch per item); and a tensor Gauss–Legendre quadrature of the same
+// wrench with as many points as it needs for 1e-6 and for 1e-10 over a sample of the twists
+// (counted at start-up; the counter `points` says how many).  Baseline: the uniform disk's
 // spinslide::force_torque over the same ε.
 //   ./build/release/benchmarks/bench_patch --benchmark_repetitions=5
 #include <benchmark/benchmark.h>
 
 #include <spinslide/values/disk.hpp>
 #include <spinslide/values/friction_wrench.hpp>
+#include <spinslide/values/patch_dissipation.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
 #include <boost/math/quadrature/gauss.hpp>
@@ -108,6 +109,16 @@ void rectangle_moderate(benchmark::State& state) {
 void rectangle_far(benchmark::State& state) {
   static const std::vector<sample> s = samples(1e2, 1e4, false);
   wrenches(state, linear_sole(), s);
+}
+// friction_dissipation: D, its gradient (the wrench) and its Hessian at once.
+void rectangle_dissipation(benchmark::State& state) {
+  for (auto _ : state) {
+    for (const auto& x : mixed()) {
+      auto r = spinslide::friction_dissipation(linear_sole(), x.w);
+      benchmark::DoNotOptimize(r);
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(mixed().size()));
 }
 void rectangle_sliding(benchmark::State& state) {
   static const std::vector<sample> s = samples(1, 1, true);
@@ -208,6 +219,7 @@ BENCHMARK(rectangle_linear);
 BENCHMARK(rectangle_near);
 BENCHMARK(rectangle_moderate);
 BENCHMARK(rectangle_far);
+BENCHMARK(rectangle_dissipation);
 BENCHMARK(rectangle_sliding);
 BENCHMARK(no_tension_construction);
 BENCHMARK(gauss_1e6);
@@ -220,7 +232,8 @@ int main(int argc, char** argv) {
   spinslide_bench::ratio_reporter reporter("disk");
   for (const char* name :
        {"rectangle_uniform", "rectangle_linear", "rectangle_near", "rectangle_moderate",
-        "rectangle_far", "rectangle_sliding", "no_tension_construction", "gauss_1e6", "gauss_1e10"})
+        "rectangle_far", "rectangle_dissipation", "rectangle_sliding", "no_tension_construction",
+        "gauss_1e6", "gauss_1e10"})
     reporter.add_comparison(name, "disk");
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();

@@ -11,6 +11,8 @@
 #include <spinslide/values/patch_dissipation.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
 #include <array>
 #include <cmath>
 #include <random>
@@ -44,9 +46,17 @@ TEST(PatchDissipation, HessianMatchesDifferencesOfTheWrench) {
       line = polygon_patch<double>::segment({-0.1, -0.04}, {0.12, -0.04},
                                             centre_of_pressure<double>{{0.05, -0.04}});
   // Centres inside, on the sole's edge line beside the segment, outside, far; ω = 0.
-  const std::vector<planar_twist<double>> twists{{{-0.01, 0.02}, 1.0}, {{0.3, -0.05}, -1.0},
-                                                 {{-0.1, 0.3}, 1.0},   {{-0.04, -0.2}, 1.0},
-                                                 {{0.8, -0.3}, 0.0},   {{5, 1}, -0.1}};
+  const std::vector<planar_twist<double>> twists{{{-0.01, 0.02}, 1.0},
+                                                 {{0.3, -0.05}, -1.0},
+                                                 {{-0.1, 0.3}, 1.0},
+                                                 {{-0.04, -0.2}, 1.0},
+                                                 {{0.8, -0.3}, 0.0},
+                                                 {{5, 1}, -0.1},
+                                                 // just beyond the crossover (4.3 loaded
+                                                 // radii), 20 and 10⁴ radii away
+                                                 {{0.33, 0.4}, 1.0},
+                                                 {{-2.0, 1.5}, -1.0},
+                                                 {{900.0, -700.0}, 1.0}};
   for (const auto* p : {&uniform, &linear, &lifted, &line}) {
     for (const auto& w : twists) {
       const auto d = spinslide::friction_dissipation(*p, w);
@@ -68,6 +78,50 @@ TEST(PatchDissipation, HessianMatchesDifferencesOfTheWrench) {
           *p, planar_twist<double>{{2 * w.velocity[0], 2 * w.velocity[1]}, 2 * w.omega});
       EXPECT_NEAR(d2.hessian[2][2], H[2][2] / 2, 1e-6 * scale);
       EXPECT_NEAR(d2.value, 2 * d.value, 1e-14);
+    }
+  }
+}
+
+// The closed-form far Hessian (detail/patch_far_hessian.hpp) in cpp_bin_float_50
+// against central differences of its own exact wrench (step 1e-17: the
+// differences err by ~1e-34), and the double one against it: the uniform,
+// linear and lifted sole at 4.3 to 10⁹ loaded radii, both spin senses.
+TEST(PatchDissipation, FarHessianMatchesDifferencesAt50Digits) {
+  using big = boost::multiprecision::cpp_bin_float_50;
+  auto make = [](auto zero, int kind) {
+    using R = decltype(zero);
+    const std::vector<std::array<R, 2>> sole{
+        {R(-0.1), R(-0.04)}, {R(0.12), R(-0.04)}, {R(0.12), R(0.06)}, {R(-0.1), R(0.06)}};
+    if (kind == 0) return polygon_patch<R>(sole);
+    return polygon_patch<R>(
+        sole, centre_of_pressure<R>{{R(kind == 1 ? 0.03 : 0.09), R(kind == 1 ? 0.0 : 0.03)}});
+  };
+  const double twists[][3] = {
+      {0.33, 0.4, 1.0}, {-2.0, 1.5, -1.0}, {900.0, -700.0, 1.0}, {5, 1, -0.1}, {1e6, 3, 1e-3}};
+  for (int kind = 0; kind < 3; ++kind) {
+    const auto pb = make(big(0), kind);
+    const auto pd = make(0.0, kind);
+    for (const auto& t : twists) {
+      const planar_twist<big> w{{big(t[0]), big(t[1])}, big(t[2])};
+      const auto H = spinslide::friction_dissipation(pb, w).hessian;
+      const auto Hd =
+          spinslide::friction_dissipation(pd, planar_twist<double>{{t[0], t[1]}, t[2]}).hessian;
+      const big scale = abs(H[0][0]) + abs(H[1][1]) + abs(H[2][2]);
+      const big h = big(1e-17) * (abs(w.velocity[0]) + abs(w.velocity[1]) + abs(w.omega));
+      for (std::size_t k = 0; k < 3; ++k) {
+        const auto a = spinslide::friction_wrench(pb, spinslide::detail::shifted_twist(w, k, h));
+        const auto b =
+            spinslide::friction_wrench(pb, spinslide::detail::shifted_twist(w, k, big(-h)));
+        const std::array<big, 3> column{-(a.force[0] - b.force[0]) / (2 * h),
+                                        -(a.force[1] - b.force[1]) / (2 * h),
+                                        -(a.torque - b.torque) / (2 * h)};
+        for (std::size_t i = 0; i < 3; ++i) {
+          EXPECT_LE(abs(H[i][k] - column[i]), big(1e-30) * scale) << kind << ' ' << t[0] << i << k;
+          EXPECT_LE(std::fabs(Hd[i][k] - static_cast<double>(H[i][k])),
+                    1e-14 * static_cast<double>(scale))
+              << kind << ' ' << t[0] << i << k;
+        }
+      }
     }
   }
 }

@@ -19,6 +19,12 @@
 //                  coupled metric, a = μ = 1, Λ = 1e-3 (1e3 when sticking).
 //   impulse_handle the same through the run-time handle contact_profile, as
 //                  pair_friction and the engine adapters call it (double).
+//   patch_wrench   friction_wrench of the 0.22 × 0.10 rectangle (issue 42; as
+//                  bench_patch) at the twists v = 0.11 ε (cos 2.4i, sin 2.4i),
+//                  ω = ±1: uniform pressure, and linear with its centre at
+//                  (0.015, −0.005) (double; the unit is the disk's force_torque).
+//   patch_no_tension the polygon_patch of that rectangle with its centre of
+//                  pressure beyond the kern, at 64 points of [0.06, 0.1] × [0.015, 0.04].
 // The modes:
 //   warm      from the stored state (the curve() a contact keeps) of the
 //             previous answer, which was the answer for ε·(1 + 1e-3) (the
@@ -31,6 +37,8 @@
 // "loop" is the bare loop (read the inputs, add up the results), which the
 // script subtracts from every count.
 #include <spinslide/spinslide.hpp>
+#include <spinslide/values/friction_wrench.hpp>
+#include <spinslide/values/polygon_patch.hpp>
 
 #include <valgrind/callgrind.h>
 
@@ -242,9 +250,41 @@ void all_paths() {
                       true);
 }
 
+// The flat patch's paths (issue 42), in double, against the disk's force_torque.
+void patch_paths() {
+  using point = std::array<double, 2>;
+  const std::vector<point> sole{{-0.11, -0.05}, {0.11, -0.05}, {0.11, 0.05}, {-0.11, 0.05}};
+  const auto eps = ratios<double>();
+  std::vector<planar_twist<double>> twists;
+  twists.reserve(64);
+  for (std::size_t i = 0; i < 64; ++i) {
+    const double angle = 2.4 * static_cast<double>(i);
+    twists.push_back(
+        {{0.11 * eps[i] * std::cos(angle), 0.11 * eps[i] * std::sin(angle)}, i % 2 ? 1.0 : -1.0});
+  }
+  auto at = [](int i) { return static_cast<std::size_t>(i); };
+  const polygon_patch<double> uniform(sole),
+      linear(sole, centre_of_pressure<double>{{0.015, -0.005}});
+  count("patch_wrench.disk.double.uniform",
+        [&](int i) { return friction_wrench(uniform, twists[at(i)]).torque; });
+  count("patch_wrench.disk.double.linear",
+        [&](int i) { return friction_wrench(linear, twists[at(i)]).torque; });
+  std::vector<point> centres;
+  centres.reserve(64);
+  for (int i = 0; i < 64; ++i) {
+    const int column = i % 8, row = i / 8;
+    centres.push_back({0.06 + 0.04 * column / 7.0, 0.015 + 0.025 * row / 7.0});
+  }
+  count("patch_no_tension.disk.double.construction", [&](int i) {
+    return polygon_patch<double>(sole, centre_of_pressure<double>{centres[at(i)]})
+        .pressure_at_origin();
+  });
+}
+
 }  // namespace
 
 int main() {
   all_paths<double>();
+  patch_paths();
   all_paths<float>();
 }

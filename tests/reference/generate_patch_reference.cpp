@@ -5,8 +5,8 @@
 // flat patch (values/friction_wrench.hpp) straight from the DEFINING AREA
 // INTEGRALS, in cpp_bin_float_50,
 //   F = −∬ p û dA,   τ = −∬ p (x × û) dA,   û = u/|u|,  u = v + ω ẑ × x,
-// with no closed form anywhere (spinslide sums elementary edge terms and a
-// multipole series instead):
+// with no closed form anywhere (spinslide sums elementary edge terms and the
+// far field's contour integrals instead):
 //  - the pressure: uniform, or p = (α + β·x)₊ with ∬ p = 1 and ∬ p x = e,
 //    solved here by Newton with a finite-difference Jacobian on moments
 //    computed by Gauss quadrature of the clipped polygon's triangles;

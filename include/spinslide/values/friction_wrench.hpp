@@ -9,16 +9,16 @@
 ///   F = −∬ p û dA,   τ = −∬ p (x × û) dA (about the patch origin),
 /// and the dissipation D = ∬ p |u| dA, of which (F, τ) is minus the gradient.
 /// Near the instantaneous centre c = ẑ × v/ω the closed-form edge sums
-/// (detail/patch_edge_sums.hpp), far from it (and for ω = 0) the multipole
-/// expansion (detail/patch_multipole.hpp); nothing allocates, nothing throws
-/// but the policy's error for a bad twist.
+/// (detail/patch_edge_sums.hpp), far from it the far field's contour
+/// integrals (detail/patch_far_field.hpp), for ω = 0 the sliding wrench; nothing allocates, nothing
+/// throws but the policy's error for a bad twist.
 
 #ifndef SPINSLIDE_VALUES_FRICTION_WRENCH_HPP
 #define SPINSLIDE_VALUES_FRICTION_WRENCH_HPP
 
 #include <spinslide/base/detail/checks.hpp>
 #include <spinslide/values/detail/patch_edge_sums.hpp>
-#include <spinslide/values/detail/patch_multipole.hpp>
+#include <spinslide/values/detail/patch_far_field.hpp>
 #include <spinslide/values/detail/patch_slabs.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
@@ -135,40 +135,37 @@ planar_wrench<Real> near_wrench(const loaded_region<Real, N>& r, const planar_tw
   return {{s * I.G[1], -s * I.G[0]}, -s * unit * (I.H + dot(c, I.G))};
 }
 
-/// The multipole expansion about z₀ in the frame scaled by ρ₀: F = −i q̂ S,
+/// The far field about z₀ in the frame scaled by ρ₀: F = −i q̂ S,
 /// τ = −ρ₀ Re(q̂ T) + z₀ × F (docs/patches.md, "Far centres").
 template <class Real, std::size_t N>
 planar_wrench<Real> far_wrench(const loaded_region<Real, N>& r, const planar_twist<Real>& w,
                                const cplx<Real>& q, Real q_norm, Real* dissipation) {
   const Real rho0 = r.rho0;
-  const multipole_series<Real> series(multipole_order(Real(q_norm / (fabs_real(w.omega) * rho0))));
   // W = ωρ₀/q = ωρ₀ q̄/|q|², computed from q̂ (no overflow of |q|²).
   const cplx<Real> qhat{q.re / q_norm, q.im / q_norm};
   const Real wr = w.omega * rho0 / q_norm;
   // An area's pressure scales with ρ₀², a segment's line density with ρ₀.
   const Real r2 = r.area ? Real(rho0 * rho0) : rho0;
-  const multipole_frame<Real> f{
+  const far_frame<Real> f{
       r.p0 * r2, {r.beta[0] * r2 * rho0, r.beta[1] * r2 * rho0}, {wr * qhat.re, -wr * qhat.im}};
-  vertex_list<Real, N> scaled;
-  for (const auto& v : r.vertices)
-    scaled.push_back({(v[0] - r.z0[0]) / rho0, (v[1] - r.z0[1]) / rho0});
-  const multipole_sums<Real> m =
-      r.area ? polygon_multipole(scaled, f, series, dissipation != nullptr)
-             : segment_multipole(scaled[0], scaled[1], f, series, dissipation != nullptr);
+  const far_sums<Real> m =
+      r.area ? polygon_far_integrals(r.vertices, r.z0, rho0, f, dissipation != nullptr)
+             : segment_far_integrals(r.vertices[0], r.vertices[1], r.z0, rho0, f,
+                                     dissipation != nullptr);
   if (dissipation) *dissipation = q_norm * m.SD.re;
   const cplx<Real> qs = qhat * m.S, qt = qhat * m.T;
   const point2<Real> F{qs.im, -qs.re};
   return {F, -rho0 * qt.re + cross(r.z0, F)};
 }
 
-/// One region's wrench, ω ≠ 0: the expansion beyond 4ρ₀, the edge sums within.
+/// One region's wrench, ω ≠ 0: the far field beyond 4ρ₀, the edge sums within.
 template <class Real, std::size_t N>
 planar_wrench<Real> region_wrench(const loaded_region<Real, N>& r, const planar_twist<Real>& w,
                                   Real* dissipation) {
   // q = ω z₀ − i v: the centre is c = z₀ − q/ω, at R = |q|/(|ω|ρ₀) loaded radii.
   const cplx<Real> q{w.omega * r.z0[0] + w.velocity[1], w.omega * r.z0[1] - w.velocity[0]};
   const Real q_norm = boost::math::hypot(q.re, q.im);
-  if (q_norm >= multipole_crossover<Real>() * fabs_real(w.omega) * r.rho0)
+  if (q_norm >= far_crossover<Real>() * fabs_real(w.omega) * r.rho0)
     return far_wrench(r, w, q, q_norm, dissipation);
   return near_wrench(r, w, dissipation);
 }
@@ -244,7 +241,7 @@ planar_wrench<Real> wrench_of(const polygon_patch<Real>& patch, const planar_twi
     return point_wrench(x, w);
   }
   // ω = 0: û = v̂ everywhere, F = −v̂ and τ = −e × v̂, e the centre of pressure
-  // (docs/patches.md, "The wrench": the expansion's first terms, exactly).
+  // (docs/patches.md, "The wrench").
   if (w.omega == 0) {
     const Real speed = boost::math::hypot(w.velocity[0], w.velocity[1]);
     const point2<Real> f{-w.velocity[0] / speed, -w.velocity[1] / speed};

@@ -14,6 +14,7 @@
 #define SPINSLIDE_VALUES_PATCH_DISSIPATION_HPP
 
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/values/detail/patch_far_hessian.hpp>
 #include <spinslide/values/detail/patch_hessian.hpp>
 #include <spinslide/values/friction_wrench.hpp>
 #include <spinslide/values/polygon_patch.hpp>
@@ -72,7 +73,7 @@ sym2<Real> second_moment(const polygon_patch<Real>& p) {
   const point2<Real> d = minus(v[1], v[0]);
   const Real length = sqrt(dot(d, d)), g = 1 / sqrt(Real(3));
   sym2<Real> m{};
-  for (Real t : {(1 - g) / 2, (1 + g) / 2}) {
+  for (const Real& t : {(1 - g) / 2, (1 + g) / 2}) {
     const point2<Real> x{v[0][0] + t * d[0], v[0][1] + t * d[1]};
     const Real w = length / 2 * p.pressure(x);
     m[0] += w * x[0] * x[0];
@@ -95,8 +96,8 @@ patch_matrix<Real> sliding_hessian(const polygon_patch<Real>& p, const planar_tw
            {nh[0] * ev / speed, nh[1] * ev / speed, vjv / speed}}};
 }
 
-/// Far centres: central differences of the exact wrench (−∂(F, τ)/∂w), steps
-/// ∛ε of the twist's scale: about ε^{2/3} relative (docs/patches.md).
+/// Far centres of a line patch: central differences of the exact wrench
+/// (−∂(F, τ)/∂w), steps ∛ε of the twist's scale: about ε^{2/3} relative (docs/patches.md).
 template <class Real>
 patch_matrix<Real> far_hessian(const polygon_patch<Real>& p, const planar_twist<Real>& w) {
   BOOST_MATH_STD_USING
@@ -118,6 +119,23 @@ patch_matrix<Real> far_hessian(const polygon_patch<Real>& p, const planar_twist<
   return m;
 }
 
+/// Far centres on an area: in closed form by the far field's contour
+/// integrals (detail/patch_far_hessian.hpp), about the pressure origin z₀.
+template <class Real>
+patch_matrix<Real> far_area_hessian(const polygon_patch<Real>& p, const planar_twist<Real>& w) {
+  const auto& z0 = p.pressure_origin();
+  const Real rho0 = p.loaded_radius();
+  const cplx<Real> q{w.omega * z0[0] + w.velocity[1], w.omega * z0[1] - w.velocity[0]};
+  const Real q_norm = boost::math::hypot(q.re, q.im);
+  const cplx<Real> qhat{q.re / q_norm, q.im / q_norm};
+  const Real wr = w.omega * rho0 / q_norm, r2 = rho0 * rho0;
+  const auto& beta = p.pressure_gradient();
+  const far_frame<Real> f{p.pressure_at_origin() * r2,
+                          {beta[0] * r2 * rho0, beta[1] * r2 * rho0},
+                          {wr * qhat.re, -wr * qhat.im}};
+  return from_origin_twist(polygon_far_hessian(p.loaded_vertices(), z0, rho0, f, qhat, q_norm), z0);
+}
+
 /// ∇²D at a checked twist.
 template <class Real>
 patch_matrix<Real> patch_dissipation_hessian(const polygon_patch<Real>& p,
@@ -134,8 +152,8 @@ patch_matrix<Real> patch_dissipation_hessian(const polygon_patch<Real>& p,
   if (w.omega == 0) return sliding_hessian(p, w);
   const auto& z0 = p.pressure_origin();
   const Real qx = w.omega * z0[0] + w.velocity[1], qy = w.omega * z0[1] - w.velocity[0];
-  if (boost::math::hypot(qx, qy) >= multipole_crossover<Real>() * fabs(w.omega) * p.loaded_radius())
-    return far_hessian(p, w);
+  if (boost::math::hypot(qx, qy) >= far_crossover<Real>() * fabs(w.omega) * p.loaded_radius())
+    return p.shape() == patch_shape::area ? far_area_hessian(p, w) : far_hessian(p, w);
   const point2<Real> c{-w.velocity[1] / w.omega, w.velocity[0] / w.omega};
   const Real alpha = p.pressure_at_origin() - dot(p.pressure_gradient(), z0);
   const auto& v = p.loaded_vertices();
@@ -151,10 +169,14 @@ patch_matrix<Real> patch_dissipation_hessian(const polygon_patch<Real>& p,
 }  // namespace detail
 
 /// D, ∇D and ∇²D of `patch` at the twist `w` (the checks of friction_wrench).
-/// The Hessian is in closed form for an instantaneous centre near the patch
-/// (within 4 loaded radii of its centre) and for ω = 0, by central differences
-/// of the exact wrench beyond (about ε^{2/3} relative); +∞ in every entry where it
-/// diverges: a point patch or a line patch pivoting about one of its points.
+/// One call gives the wrench (−gradient) and the Hessian at one twist, for
+/// the projections that need all three: the Hessian is in closed form for
+/// an instantaneous centre near the patch (the edge sums, within 4 loaded
+/// radii of its centre), far from an area (the far field's contour
+/// integrals, at about the cost of two more wrenches) and for ω = 0; a line
+/// patch's far Hessian is by central differences of the exact wrench (six
+/// wrenches, about ε^{2/3} relative); +∞ in every entry where it diverges:
+/// a point patch or a line patch pivoting about one of its points.
 template <class Real, class Policy = boost::math::policies::policy<>>
 patch_dissipation<Real> friction_dissipation(const polygon_patch<Real>& patch,
                                              const planar_twist<Real>& w,

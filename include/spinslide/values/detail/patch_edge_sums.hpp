@@ -12,15 +12,15 @@
 ///   Λ = ∫ ds/ρ = asinh(s₁/|h|) − asinh(s₀/|h|).
 /// The sums cancel as |c| grows (the force loses ~|c|/ℓ, the torque
 /// ~(|c|/ℓ)²); the caller uses them only for |c − z₀| < 4ρ₀
-/// (patch_multipole.hpp beyond).
+/// (patch_far_field.hpp beyond).
 
 #ifndef SPINSLIDE_VALUES_DETAIL_PATCH_EDGE_SUMS_HPP
 #define SPINSLIDE_VALUES_DETAIL_PATCH_EDGE_SUMS_HPP
 
 #include <spinslide/values/detail/patch_geometry.hpp>
 
-#include <boost/math/special_functions/asinh.hpp>
 #include <boost/math/special_functions/hypot.hpp>
+#include <boost/math/special_functions/log1p.hpp>
 
 #include <cmath>
 #include <cstddef>
@@ -51,17 +51,25 @@ struct edge_terms {
   Real s0, s1;        ///< s at the ends
 };
 
-/// Λ = asinh(s₁/|h|) − asinh(s₀/|h|) without cancellation: with s₀, s₁ of
-/// one sign, asinh a − asinh b = asinh(a√(1+b²) − b√(1+a²)) (sinh of a
-/// difference, A&S 4.5.24) = asinh(L(s₀+s₁)/(s₁ρ₀ + s₀ρ₁)).
+/// Λ = asinh(s₁/|h|) − asinh(s₀/|h|) without cancellation, by one log1p
+/// (asinh(s/|h|) = ln((s + ρ)/|h|); s₁ − s₀ = L, D₁ = ρ₁ − ρ₀ = L(s₀ + s₁)/(ρ₀ + ρ₁)):
+///  - 0 < s₀ < s₁:  Λ = ln((s₁ + ρ₁)/(s₀ + ρ₀)) = log1p((L + D₁)/(s₀ + ρ₀)), D₁ > 0;
+///  - s₀ < s₁ < 0:  Λ = ln((ρ₀ − s₀)/(ρ₁ − s₁)) = log1p((L − D₁)/(ρ₁ − s₁)), D₁ < 0;
+///  - s₀ ≤ 0 ≤ s₁:  Λ = ln((1 + a)(1 + b)) = log1p(a + b + ab) with
+///    a = (s₁ + ρ₁ − |h|)/|h| = (s₁ + s₁²/(ρ₁ + |h|))/|h| ≥ 0 and b the same of −s₀;
+/// every argument a sum of non-negative terms.  (It replaced asinh, A&S
+/// 4.5.24's difference form: one log1p costs half of asinh plus its log.)
 template <class Real>
-Real asinh_difference(Real s0, Real s1, Real rho0, Real rho1, Real h, Real length) {
+Real asinh_difference(Real s0, Real s1, Real rho0, Real rho1, Real h, Real length, Real d1) {
   BOOST_MATH_STD_USING
-  // The standard library's asinh for the built-in types (Boost's, with its
-  // policy checks, cost the near sums 3x); multiprecision types find theirs by ADL.
-  using std::asinh;
-  if (s0 * s1 <= 0) return asinh(s1 / fabs(h)) - asinh(s0 / fabs(h));
-  return asinh(length * (s0 + s1) / (s1 * rho0 + s0 * rho1));
+  // The standard library's log1p for the built-in types (Boost's, with its
+  // policy checks, costs more); multiprecision types find theirs by ADL.
+  using std::log1p;
+  if (s0 > 0) return log1p((length + d1) / (s0 + rho0));
+  if (s1 < 0) return log1p((length - d1) / (rho1 - s1));
+  const Real ah = fabs(h);
+  const Real a = (s1 + s1 * s1 / (rho1 + ah)) / ah, b = (s0 * s0 / (rho0 + ah) - s0) / ah;
+  return log1p(a + b + a * b);
 }
 
 template <class Real>
@@ -78,12 +86,12 @@ edge_terms<Real> edge_integrals(const point2<Real>& a, const point2<Real>& b) {
   const Real s0 = dot(a, e.t), s1 = dot(b, e.t);
   const Real rho0 = sqrt(a[0] * a[0] + a[1] * a[1]), rho1 = sqrt(b[0] * b[0] + b[1] * b[1]);
   const Real h2 = e.h * e.h;
-  const Real lambda = e.h == 0 ? Real(0) : asinh_difference(s0, s1, rho0, rho1, e.h, L);
-  const Real srho = s1 * rho1 - s0 * rho0;
-  e.K = (srho + h2 * lambda) / 2;
   // ρ₁² − ρ₀² = s₁² − s₀² = L(s₀ + s₁): the differences of powers of ρ without cancellation.
   const Real sum = rho0 + rho1;
   e.D1 = sum > 0 ? Real(L * (s0 + s1) / sum) : Real(0);
+  const Real lambda = e.h == 0 ? Real(0) : asinh_difference(s0, s1, rho0, rho1, e.h, L, e.D1);
+  const Real srho = s1 * rho1 - s0 * rho0;
+  e.K = (srho + h2 * lambda) / 2;
   e.I1 = e.D1 * (rho1 * rho1 + rho1 * rho0 + rho0 * rho0) / 3;
   e.J3 = (s1 * rho1 * rho1 * rho1 - s0 * rho0 * rho0 * rho0 + 3 * h2 * e.K) / 4;
   e.D2 = (srho - h2 * lambda) / 2;

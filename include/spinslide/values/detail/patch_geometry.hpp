@@ -91,50 +91,88 @@ struct area_moments {
   std::array<Real, 3> second{};
 };
 
-/// The area moments of the polygon `poly` about g, fanned into triangles
-/// (y₀, yᵢ, yᵢ₊₁) (docs/patches.md, "Moments": a triangle of area A has
-/// ∬ y = A s/3 and ∬ y yᵀ = (A/12)(Σ yₐyₐᵀ + s sᵀ), s = Σ yₐ).
-template <class Real, std::size_t N>
-area_moments<Real> polygon_moments(const vertex_list<Real, N>& poly, const point2<Real>& g) {
-  area_moments<Real> m;
-  const std::size_t n = poly.size();
-  if (n < 3) return m;
-  const point2<Real> y0 = minus(poly[0], g);
-  for (std::size_t i = 1; i + 1 < n; ++i) {
-    const point2<Real> y1 = minus(poly[i], g), y2 = minus(poly[i + 1], g);
+/// The area moments of a polygon whose vertices (about the reference point)
+/// arrive one at a time, fanned into triangles (y₀, yᵢ, yᵢ₊₁) (docs/patches.md,
+/// "Moments": a triangle of area A has ∬ y = A s/3 and
+/// ∬ y yᵀ = (A/12)(Σ yₐyₐᵀ + s sᵀ), s = Σ yₐ).
+template <class Real>
+class moment_fan {
+ public:
+  /// The next vertex y.
+  void operator()(const point2<Real>& y) {
+    if (count_ >= 2) add_triangle(y);
+    if (count_ == 0) y0_ = y;
+    previous_ = y;
+    ++count_;
+  }
+  /// The moments of the vertices so far (zero for fewer than 3).
+  const area_moments<Real>& moments() const { return m_; }
+
+ private:
+  void add_triangle(const point2<Real>& y2) {
+    const point2<Real>&y0 = y0_, &y1 = previous_;
     const Real area = cross(minus(y1, y0), minus(y2, y0)) / 2;
     const point2<Real> s{y0[0] + y1[0] + y2[0], y0[1] + y1[1] + y2[1]};
-    m.area += area;
-    m.first[0] += area * s[0] / 3;
-    m.first[1] += area * s[1] / 3;
+    m_.area += area;
+    m_.first[0] += area * s[0] / 3;
+    m_.first[1] += area * s[1] / 3;
     const Real a12 = area / 12;
-    m.second[0] += a12 * (y0[0] * y0[0] + y1[0] * y1[0] + y2[0] * y2[0] + s[0] * s[0]);
-    m.second[1] += a12 * (y0[0] * y0[1] + y1[0] * y1[1] + y2[0] * y2[1] + s[0] * s[1]);
-    m.second[2] += a12 * (y0[1] * y0[1] + y1[1] * y1[1] + y2[1] * y2[1] + s[1] * s[1]);
+    m_.second[0] += a12 * (y0[0] * y0[0] + y1[0] * y1[0] + y2[0] * y2[0] + s[0] * s[0]);
+    m_.second[1] += a12 * (y0[0] * y0[1] + y1[0] * y1[1] + y2[0] * y2[1] + s[0] * s[1]);
+    m_.second[2] += a12 * (y0[1] * y0[1] + y1[1] * y1[1] + y2[1] * y2[1] + s[1] * s[1]);
   }
-  return m;
+
+  area_moments<Real> m_;
+  point2<Real> y0_{}, previous_{};
+  std::size_t count_ = 0;
+};
+
+/// The area moments of the polygon `poly` about g (moment_fan).
+template <class Real, std::size_t N>
+area_moments<Real> polygon_moments(const vertex_list<Real, N>& poly, const point2<Real>& g) {
+  moment_fan<Real> fan;
+  for (const auto& v : poly) fan(minus(v, g));
+  return fan.moments();
 }
 
-/// The part of the convex polygon `poly` where α + β·(x − g) ≥ 0
-/// (Sutherland–Hodgman for one half-plane), into `out`.
-template <class Real, std::size_t N, std::size_t M>
-void clip_polygon(const vertex_list<Real, N>& poly, const point2<Real>& g, Real alpha,
-                  const point2<Real>& beta, vertex_list<Real, M>& out) {
-  out.clear();
+/// The vertices of the part of the convex polygon `poly` where
+/// α + β·(x − g) ≥ 0 (Sutherland–Hodgman for one half-plane), in order, to `sink`.
+template <class Real, std::size_t N, class Sink>
+void clip_polygon_to(const vertex_list<Real, N>& poly, const point2<Real>& g, Real alpha,
+                     const point2<Real>& beta, Sink& sink) {
   const std::size_t n = poly.size();
   auto f = [&](std::size_t i) { return alpha + dot(beta, minus(poly[i], g)); };
   Real fi = f(0);
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = i + 1 == n ? 0 : i + 1;
     const Real fj = f(j);
-    if (fi >= 0) out.push_back(poly[i]);
+    if (fi >= 0) sink(poly[i]);
     if ((fi > 0 && fj < 0) || (fi < 0 && fj > 0)) {
       const Real t = fi / (fi - fj);
-      out.push_back(
-          {poly[i][0] + t * (poly[j][0] - poly[i][0]), poly[i][1] + t * (poly[j][1] - poly[i][1])});
+      sink(point2<Real>{poly[i][0] + t * (poly[j][0] - poly[i][0]),
+                        poly[i][1] + t * (poly[j][1] - poly[i][1])});
     }
     fi = fj;
   }
+}
+
+/// The same into `out`.
+template <class Real, std::size_t N, std::size_t M>
+void clip_polygon(const vertex_list<Real, N>& poly, const point2<Real>& g, Real alpha,
+                  const point2<Real>& beta, vertex_list<Real, M>& out) {
+  out.clear();
+  auto sink = [&](const point2<Real>& v) { out.push_back(v); };
+  clip_polygon_to(poly, g, alpha, beta, sink);
+}
+
+/// The area moments about the origin of the part of `poly` where α + β·x ≥ 0,
+/// without building it.
+template <class Real, std::size_t N>
+area_moments<Real> clipped_moments(const vertex_list<Real, N>& poly, Real alpha,
+                                   const point2<Real>& beta) {
+  moment_fan<Real> fan;
+  clip_polygon_to(poly, point2<Real>{}, alpha, beta, fan);
+  return fan.moments();
 }
 
 }  // namespace detail

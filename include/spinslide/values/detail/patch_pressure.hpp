@@ -81,9 +81,8 @@ class no_tension_objective {
     std::array<std::array<Real, 3>, 3> hessian;
   };
 
-  state at(const std::array<Real, 3>& t, vertex_list<Real, N>& loaded) const {
-    clip_polygon(poly_, point2<Real>{}, t[0], point2<Real>{t[1], t[2]}, loaded);
-    const area_moments<Real> m = polygon_moments(loaded, point2<Real>{});
+  state at(const std::array<Real, 3>& t) const {
+    const area_moments<Real> m = clipped_moments(poly_, t[0], point2<Real>{t[1], t[2]});
     const Real A = m.area, Sx = m.first[0], Sy = m.first[1];
     const Real Jxx = m.second[0], Jxy = m.second[1], Jyy = m.second[2];
     const Real load = t[0] * A + t[1] * Sx + t[2] * Sy;
@@ -116,9 +115,8 @@ linear_pressure<Real, N> no_tension_pressure(const vertex_list<Real, N>& poly,
                                              int max_iterations = 100) {
   const no_tension_objective<Real, N> phi(poly, e);
   linear_pressure<Real, N> out;
-  auto s = phi.at(theta, out.loaded);
+  auto s = phi.at(theta);
   const Real tolerance = 16 * boost::math::tools::epsilon<Real>();
-  vertex_list<Real, N> trial_region;
   for (int it = 0; it < max_iterations && gradient_norm(s.gradient) > tolerance; ++it) {
     std::array<Real, 3> step{};
     if (!solve3(s.hessian, {-s.gradient[0], -s.gradient[1], -s.gradient[2]}, step)) break;
@@ -128,14 +126,13 @@ linear_pressure<Real, N> no_tension_pressure(const vertex_list<Real, N>& poly,
     for (int halvings = 0; halvings < 60; ++halvings, t /= 2) {
       const std::array<Real, 3> trial{theta[0] + t * step[0], theta[1] + t * step[1],
                                       theta[2] + t * step[2]};
-      const auto ts = phi.at(trial, trial_region);
+      const auto ts = phi.at(trial);
       // Armijo on Φ, or (at rounding level, where Φ no longer resolves the
       // decrease) a smaller gradient.
       if (ts.value <= s.value + t * slope / 4 ||
           gradient_norm(ts.gradient) < gradient_norm(s.gradient) / 2) {
         theta = trial;
         s = ts;
-        out.loaded = trial_region;
         moved = true;
         break;
       }
@@ -144,6 +141,7 @@ linear_pressure<Real, N> no_tension_pressure(const vertex_list<Real, N>& poly,
   }
   out.alpha = theta[0];
   out.beta = {theta[1], theta[2]};
+  clip_polygon(poly, point2<Real>{}, theta[0], out.beta, out.loaded);
   out.lifted = true;
   return out;
 }

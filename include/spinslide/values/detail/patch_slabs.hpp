@@ -4,12 +4,12 @@
 //
 /// \file patch_slabs.hpp
 /// A thin loaded region cut into fat slabs (docs/patches.md, "Thin patches"):
-/// both the edge sums and the expansion's contour integrals lose about the
+/// both the edge sums and the far field's contour integrals lose about the
 /// region's aspect ratio (their terms scale with its perimeter times its
 /// length, the result with its area) and as much again to the steep
 /// pressure gradient a thin no-tension region carries across itself.  Cut
 /// across its long axis into slabs of aspect at most 2, each is evaluated
-/// on its own (edge sums or expansion, each about its own centre) and the
+/// on its own (edge sums or far field, each about its own centre) and the
 /// wrenches add up.
 
 #ifndef SPINSLIDE_VALUES_DETAIL_PATCH_SLABS_HPP
