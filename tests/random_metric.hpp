@@ -11,6 +11,7 @@
 
 #include <spinslide/contact/planar_metric.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <random>
@@ -60,6 +61,14 @@ inline matrix3 random_spd_with_condition(std::mt19937_64& rng, double kappa) {
       m[i][j] = m[j][i] = s * scale;
     }
   return m;
+}
+
+// m x.
+inline std::array<double, 3> times(const matrix3& m, const std::array<double, 3>& x) {
+  std::array<double, 3> y{};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) y[i] += m[i][j] * x[j];
+  return y;
 }
 
 }  // namespace spinslide_test

@@ -4,7 +4,8 @@
 //
 /// \file contact.hpp
 /// The contact: the contact law for simulators, the coupled limit set and its
-/// projection, the impulse, spring-history and trial-cap laws, one coupled
+/// projection (for round profiles and flat patches), the impulse,
+/// spring-history and trial-cap laws, one coupled
 /// pair (`pair_friction`), the joint solve of many pairs and the adapters'
 /// reports (include/spinslide/contact/).  Includes the values it builds on.
 /// The engine adapters are not here: engines/\<engine\>/ (docs/engines.md).
@@ -21,6 +22,9 @@
 #include <spinslide/contact/limit_set.hpp>
 #include <spinslide/contact/pair_friction.hpp>
 #include <spinslide/contact/pair_report.hpp>
+#include <spinslide/contact/patch_impulse.hpp>
+#include <spinslide/contact/patch_limit_set.hpp>
+#include <spinslide/contact/patch_result.hpp>
 #include <spinslide/contact/planar_metric.hpp>
 #include <spinslide/contact/spring_friction.hpp>
 #include <spinslide/contact/trial_cap.hpp>

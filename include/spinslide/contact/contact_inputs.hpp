@@ -93,6 +93,15 @@ struct impulse_contact {
   friction_coefficient<Real> friction;  ///< μ
 };
 
+/// One flat patch's contact over one time step, for its impulse law
+/// (patch_impulse.hpp): the patch itself gives the size, so no radius.
+template <class Real>
+struct patch_impulse_contact {
+  using value_type = Real;              ///< the floating type
+  normal_impulse<Real> normal;          ///< Λ
+  friction_coefficient<Real> friction;  ///< μ
+};
+
 /// One contact under a normal force, for the force-level laws
 /// (spring_friction.hpp).
 template <class Real>
