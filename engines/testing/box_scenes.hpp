@@ -60,6 +60,14 @@ inline spinslide::plate_throw_result<double> exact_throw() {
                                 spinslide::planar_twist<double>{{throw_speed, 0}, throw_spin});
 }
 
+// What a throw in an engine measured: when the sliding and the spin
+// stopped, the turn and the displacement of the centre at the end, and
+// whether the motion stayed finite.
+struct throw_outcome {
+  double slide_stop = -1, spin_stop = -1, turn = 0, x = 0, y = 0;
+  bool finite = true;
+};
+
 // The slope's angle: tan α = 0.9 μ.
 inline double slope_angle() { return std::atan(0.9 * friction); }
 

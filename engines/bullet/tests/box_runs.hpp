@@ -62,12 +62,10 @@ inline void native_friction(box_world& w, double spinning) {
 }
 
 // The throw: when the sliding (the centre below 1 mm/s) and the spin
-// (below 0.01 rad/s) stopped, or `stopped` said so (the plug-in's sticking
-// report); the turn and the displacement at the end (0.5 s).
-struct throw_outcome {
-  double slide_stop = -1, spin_stop = -1, turn = 0, x = 0, y = 0;
-  bool finite = true;
-};
+// (below 0.01 rad/s) stopped, or, if given, when `stopped` first says so
+// (the plug-in's sticking report); the turn and the displacement at the end
+// (0.5 s).
+using box_scenes::throw_outcome;
 inline throw_outcome run_throw(box_world& w, const std::function<bool()>& stopped = nullptr) {
   w.steps(0.1);
   w.box->setLinearVelocity(btVector3(btScalar(box_scenes::throw_speed), 0, 0));
@@ -81,10 +79,12 @@ inline throw_outcome run_throw(box_world& w, const std::function<bool()>& stoppe
     const btVector3 v = w.box->getLinearVelocity(), spin = w.box->getAngularVelocity();
     o.finite = o.finite && std::isfinite(static_cast<double>(v.length() + spin.length()));
     const double t = i * step;
-    const bool at_rest = stopped && stopped();
-    if (o.slide_stop < 0 && (at_rest || std::hypot(double(v.x()), double(v.y())) < 1e-3))
+    const bool reported = static_cast<bool>(stopped);
+    const bool at_rest = reported && stopped();
+    if (o.slide_stop < 0 && (reported ? at_rest : std::hypot(double(v.x()), double(v.y())) < 1e-3))
       o.slide_stop = t;
-    if (o.spin_stop < 0 && (at_rest || std::fabs(double(spin.z())) < 1e-2)) o.spin_stop = t;
+    if (o.spin_stop < 0 && (reported ? at_rest : std::fabs(double(spin.z())) < 1e-2))
+      o.spin_stop = t;
     const double now = w.yaw();
     unwrapped += std::remainder(now - last, 2 * 3.14159265358979323846);
     last = now;
@@ -137,15 +137,16 @@ inline box_scenes::pushed_state run_push(box_world& w) {
 // The box dropped from 3 cm above its lowest corner, tilted by 0.5 rad about
 // (1, 0.6, 0) (it lands on a corner, falls onto an edge, then its face),
 // thrown at 0.4 m/s and spinning at 6 rad/s, for 1 s: true if its motion
-// stayed finite.
+// stayed finite (`observe` is called after every step).
 inline btQuaternion tipping_turn() { return btQuaternion(btVector3(1, btScalar(0.6), 0), 0.5); }
 constexpr double tipping_height = 0.1;
-inline bool run_tipping(box_world& w) {
+inline bool run_tipping(box_world& w, const std::function<void()>& observe = nullptr) {
   w.box->setLinearVelocity(btVector3(btScalar(0.4), 0, 0));
   w.box->setAngularVelocity(btVector3(0, 0, 6));
   bool finite = true;
   for (int i = 0; i < static_cast<int>(std::lround(1.0 / step)); ++i) {
     w.scene->step(step);
+    if (observe) observe();
     const btVector3 x = w.box->getCenterOfMassPosition(), v = w.box->getLinearVelocity(),
                     spin = w.box->getAngularVelocity();
     finite = finite && std::isfinite(double(x.length() + v.length() + spin.length()));

@@ -10,10 +10,13 @@
 
 #include <spinslide/values/friction_wrench.hpp>
 
+#include "box_checks.hpp"
 #include "box_runs.hpp"
 #include "box_scenes.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 
 namespace {
@@ -90,4 +93,62 @@ TEST(BulletBoxNative, TippingOntoAnEdgeAndACornerStaysFinite) {
     box_runs::native_friction(w, n.spinning);
     EXPECT_TRUE(box_runs::run_tipping(w)) << n.name;
   }
+}
+
+namespace {
+
+// The box coupled to the table with its own patch.
+void own_patch_friction(box_runs::box_world& w) {
+  w.scene->plugin().couple(
+      w.box, w.scene->table(),
+      spinslide::pair_friction<double>(
+          spinslide::own_patch{}, spinslide::friction_coefficient<double>{box_scenes::friction}));
+}
+
+}  // namespace
+
+TEST(BulletBoxPatch, ThrownBoxStopsBothMotionsAtTheExactStop) {
+  box_runs::box_world w(friction::plugin);
+  own_patch_friction(w);
+  box_checks::expect_exact_stop(
+      box_runs::run_throw(
+          w, [&] { return w.scene->plugin().report(w.box, w.scene->table()).sticking; }),
+      box_runs::step, "own patch");
+}
+
+TEST(BulletBoxPatch, HoldsOnASlopeAtNineTenthsOfTheFrictionAngle) {
+  const double alpha = box_scenes::slope_angle();
+  box_runs::box_world w(friction::plugin,
+                        btVector3(btScalar(box_scenes::gravity * std::sin(alpha)), 0,
+                                  btScalar(-box_scenes::gravity * std::cos(alpha))));
+  own_patch_friction(w);
+  const double creep = box_runs::slope_creep(w);
+  std::printf("own patch: moves %.3e m in 1 s on the slope\n", creep);
+  EXPECT_LT(creep, 1e-9);
+  EXPECT_TRUE(w.scene->plugin().report(w.box, w.scene->table()).sticking);
+}
+
+TEST(BulletBoxPatch, PushedAtAnOffsetPointTurnsAsTheExactLimitSurfaceSays) {
+  box_runs::box_world w(friction::plugin);
+  own_patch_friction(w);
+  box_checks::expect_exact_push(box_runs::run_push(w), "own patch");
+}
+
+// The box lands on a corner (Bullet's manifold then has one point: a point
+// patch), falls onto an edge (a line) and its face: no exception, no NaN.
+TEST(BulletBoxPatch, TippingOntoAnEdgeAndACornerRunsWithoutNaN) {
+  box_runs::box_world w(friction::plugin, btVector3(0, 0, btScalar(-box_scenes::gravity)),
+                        box_runs::tipping_height, box_runs::tipping_turn());
+  own_patch_friction(w);
+  std::array<int, 5> steps_with{};  // steps with 0, 1, 2, 3, 4 pressed points
+  const auto count = [&] {
+    const int n = w.scene->plugin().report(w.box, w.scene->table()).contacts;
+    ++steps_with[static_cast<std::size_t>(n < 4 ? n : 4)];
+  };
+  EXPECT_NO_THROW(EXPECT_TRUE(box_runs::run_tipping(w, count)));
+  std::printf("steps with 1, 2, 3, 4 pressed points: %d, %d, %d, %d\n", steps_with[1],
+              steps_with[2], steps_with[3], steps_with[4]);
+  EXPECT_GT(steps_with[1], 0);
+  EXPECT_GT(steps_with[2], 0);
+  EXPECT_GT(steps_with[4], 0);
 }

@@ -61,12 +61,10 @@ inline void settle(const mjModel* m, mjData* d, const stepper& step, double seco
 }
 
 // The throw: when the sliding (the centre below 1 mm/s) and the spin
-// (below 0.01 rad/s) stopped, or `stopped` said so (the adapter's sticking
-// report); the turn and the displacement at the end (0.5 s).
-struct throw_outcome {
-  double slide_stop = -1, spin_stop = -1, turn = 0, x = 0, y = 0;
-  bool finite = true;
-};
+// (below 0.01 rad/s) stopped, or, if given, when `stopped` first says so
+// (the adapter's sticking report); the turn and the displacement at the end
+// (0.5 s).
+using box_scenes::throw_outcome;
 inline throw_outcome run_throw(const mjModel* m, mjData* d, const stepper& step,
                                const std::function<bool()>& stopped = nullptr) {
   settle(m, d, step);
@@ -79,10 +77,12 @@ inline throw_outcome run_throw(const mjModel* m, mjData* d, const stepper& step,
   while (d->time < 0.5 - m->opt.timestep / 2) {
     step(d);
     for (int j = 0; j < 6; ++j) o.finite = o.finite && std::isfinite(d->qvel[j]);
-    const bool at_rest = stopped && stopped();
-    if (o.slide_stop < 0 && (at_rest || std::hypot(d->qvel[0], d->qvel[1]) < 1e-3))
+    const bool reported = static_cast<bool>(stopped);
+    const bool at_rest = reported && stopped();
+    if (o.slide_stop < 0 && (reported ? at_rest : std::hypot(d->qvel[0], d->qvel[1]) < 1e-3))
       o.slide_stop = d->time;
-    if (o.spin_stop < 0 && (at_rest || std::fabs(d->qvel[5]) < 1e-2)) o.spin_stop = d->time;
+    if (o.spin_stop < 0 && (reported ? at_rest : std::fabs(d->qvel[5]) < 1e-2))
+      o.spin_stop = d->time;
   }
   o.turn = yaw(d) - yaw0;
   o.x = d->qpos[0] - x0;
@@ -136,7 +136,8 @@ inline box_scenes::pushed_state run_push(const mjModel* m, mjData* d, const step
 
 // The box dropped from 3 cm, tilted by 0.5 rad about (1, 0.6, 0) (it lands on
 // a corner, falls onto an edge, then its face), thrown at 0.4 m/s and
-// spinning at 6 rad/s, for 1 s: true if every velocity stayed finite.
+// spinning at 6 rad/s, for 1 s: true if every velocity stayed finite
+// (`observe` is called after every step).
 inline scene tipping_scene(int condim = 1, const char* cone = "elliptic") {
   scene s;
   s.condim = condim;
@@ -146,13 +147,15 @@ inline scene tipping_scene(int condim = 1, const char* cone = "elliptic") {
   s.quat = {std::cos(half), std::sin(half) / n, 0.6 * std::sin(half) / n, 0};
   return s;
 }
-inline bool run_tipping(const mjModel* m, mjData* d, const stepper& step) {
+inline bool run_tipping(const mjModel* m, mjData* d, const stepper& step,
+                        const std::function<void()>& observe = nullptr) {
   d->qvel[0] = 0.4;
   d->qvel[5] = 6;
   bool finite = true;
   const auto steps = static_cast<int>(std::lround(1.0 / m->opt.timestep));
   for (int i = 0; i < steps; ++i) {
     step(d);
+    if (observe) observe();
     for (int j = 0; j < 7; ++j) finite = finite && std::isfinite(d->qpos[j]);
     for (int j = 0; j < 6; ++j) finite = finite && std::isfinite(d->qvel[j]);
   }

@@ -9,10 +9,15 @@
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
 
+#include <spinslide/engines/mujoco.hpp>
+
+#include "box_checks.hpp"
 #include "box_runs.hpp"
 #include "box_scenes.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 
 namespace {
@@ -104,4 +109,80 @@ TEST(MujocoBoxNative, TippingOntoAnEdgeAndACornerStaysFinite) {
     world w(s);
     EXPECT_TRUE(box_runs::run_tipping(w.model.get(), w.data.get(), w.native())) << n.name;
   }
+}
+
+namespace {
+
+using spinslide::friction_coefficient;
+using spinslide::own_patch;
+using spinslide::pair_friction;
+using spinslide::mujoco::coupled_friction;
+using spinslide::mujoco::geom_name;
+
+// The scene without MuJoCo's friction, the box coupled to the floor with its
+// own patch.
+struct coupled_world : world {
+  explicit coupled_world(box_runs::scene s) : world(frictionless(s)), friction(model.get()) {
+    friction.couple(
+        geom_name{"box"}, geom_name{"floor"},
+        pair_friction<double>(own_patch{}, friction_coefficient<double>{box_scenes::friction}));
+  }
+  static box_runs::scene frictionless(box_runs::scene s) {
+    s.condim = 1;
+    return s;
+  }
+  box_runs::stepper coupled() {
+    return [this](mjData* d) { friction.step(d); };
+  }
+  coupled_friction friction;
+};
+
+}  // namespace
+
+TEST(MujocoBoxPatch, ThrownBoxStopsBothMotionsAtTheExactStop) {
+  for (const double step : {1e-3, 1e-4}) {
+    box_runs::scene s;
+    s.step = step;
+    coupled_world w(s);
+    box_checks::expect_exact_stop(
+        box_runs::run_throw(w.model.get(), w.data.get(), w.coupled(),
+                            [&] { return w.friction.report(0).sticking; }),
+        step, "own patch");
+  }
+}
+
+TEST(MujocoBoxPatch, HoldsOnASlopeAtNineTenthsOfTheFrictionAngle) {
+  const double alpha = box_scenes::slope_angle();
+  box_runs::scene s;
+  s.step = 1e-3;
+  s.gravity = {box_scenes::gravity * std::sin(alpha), 0, -box_scenes::gravity * std::cos(alpha)};
+  coupled_world w(s);
+  const double creep = box_runs::slope_creep(w.model.get(), w.data.get(), w.coupled());
+  std::printf("own patch: moves %.3e m in 1 s on the slope\n", creep);
+  EXPECT_LT(creep, 1e-9);
+  EXPECT_TRUE(w.friction.report(0).sticking);
+}
+
+TEST(MujocoBoxPatch, PushedAtAnOffsetPointTurnsAsTheExactLimitSurfaceSays) {
+  coupled_world w(box_runs::scene{});
+  box_checks::expect_exact_push(box_runs::run_push(w.model.get(), w.data.get(), w.coupled()),
+                                "own patch");
+}
+
+// The box lands on a corner (one contact: a point patch), falls onto an
+// edge (two: a line patch) and then its face: no exception, no NaN.
+TEST(MujocoBoxPatch, TippingOntoAnEdgeAndACornerRunsWithoutNaN) {
+  coupled_world w(box_runs::tipping_scene());
+  std::array<int, 5> steps_with{};  // steps with 0, 1, 2, 3, 4 contacts
+  const auto count = [&] {
+    const int n = w.friction.report(0).contacts;
+    ++steps_with[static_cast<std::size_t>(n < 4 ? n : 4)];
+  };
+  EXPECT_NO_THROW(
+      EXPECT_TRUE(box_runs::run_tipping(w.model.get(), w.data.get(), w.coupled(), count)));
+  std::printf("steps with 1, 2, 3, 4 contacts: %d, %d, %d, %d\n", steps_with[1], steps_with[2],
+              steps_with[3], steps_with[4]);
+  EXPECT_GT(steps_with[1], 0);
+  EXPECT_GT(steps_with[2], 0);
+  EXPECT_GT(steps_with[4], 0);
 }
