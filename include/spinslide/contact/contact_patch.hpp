@@ -24,7 +24,6 @@
 #include <spinslide/values/detail/patch_geometry.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
-#include <boost/math/special_functions/hypot.hpp>
 #include <boost/math/tools/precision.hpp>
 
 #include <algorithm>
@@ -71,9 +70,18 @@ struct gathered_points {
   bool loaded = false;  // some point carries a load
 };
 
+/// |a − b|², compared squared where only the order matters (no square
+/// root; beyond √(max) it is +∞, and such points merge into one).
+template <class Real>
+Real squared_distance(const point2<Real>& a, const point2<Real>& b) {
+  const Real dx = a[0] - b[0], dy = a[1] - b[1];
+  return dx * dx + dy * dy;
+}
+
 template <class Real>
 Real distance(const point2<Real>& a, const point2<Real>& b) {
-  return boost::math::hypot(a[0] - b[0], a[1] - b[1]);
+  using std::sqrt;
+  return sqrt(squared_distance(a, b));
 }
 
 /// The relative tolerance as used: at least 1024 ε (below, the polygon's own
@@ -120,14 +128,18 @@ gathered_points<Real> gather_points(const Range& points, Real relative) {
   for (std::size_t k = 0; k < 2; ++k) mean[k] /= Real(n);
   g.loaded = total > 0 && isfinite(total);
   g.centre = g.loaded ? point2<Real>{moment[0] / total, moment[1] / total} : mean;
-  for (const auto& x : finite) g.spread = std::max(g.spread, distance(x, mean));
+  Real spread2 = 0;
+  for (const auto& x : finite) spread2 = std::max(spread2, squared_distance(x, mean));
+  using std::sqrt;
+  g.spread = sqrt(spread2);
   // Not below the rounding of the coordinates: points that differ by
   // rounding only are one point, however small their spread.
   g.merge = std::max(usable_tolerance(relative) * g.spread,
                      64 * boost::math::tools::epsilon<Real>() * coordinate_size(finite, g.centre));
+  const Real merge2 = g.merge * g.merge;
   for (const auto& x : finite) {
     bool repeated = false;
-    for (const auto& u : g.unique) repeated = repeated || distance(x, u) <= g.merge;
+    for (const auto& u : g.unique) repeated = repeated || squared_distance(x, u) <= merge2;
     if (!repeated) g.unique.push_back(x);
   }
   return g;
@@ -202,7 +214,7 @@ std::array<point2<Real>, 2> farthest_pair(const vertex_list<Real>& points) {
   Real longest = -1;
   for (std::size_t i = 0; i < points.size(); ++i)
     for (std::size_t j = i + 1; j < points.size(); ++j) {
-      const Real d = distance(points[i], points[j]);
+      const Real d = squared_distance(points[i], points[j]);
       if (d > longest) {
         longest = d;
         best = {points[i], points[j]};
@@ -246,7 +258,7 @@ point2<Real> clamped_centre(const vertex_list<Real>& hull, const point2<Real>& e
     inside = k == 0 ? signed_distance : std::min(inside, signed_distance);
     const Real t = fraction_along(a, b, e);
     const point2<Real> p{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
-    const Real d = distance(p, e);
+    const Real d = squared_distance(p, e);
     if (nearest_distance < 0 || d < nearest_distance) {
       nearest_distance = d;
       nearest = p;
