@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "random_metric.hpp"
+#include "regular_polygon.hpp"
 
 namespace {
 
@@ -102,12 +103,8 @@ TEST(PatchImpulse, EndsOnTheExactLawAndLowersTheEnergy) {
 }
 
 TEST(PatchImpulse, ManyGonAgreesWithTheRoundDisk) {
-  std::vector<point> gon;
-  const int n = 256;
   const double a = 0.05;
-  for (int k = 0; k < n; ++k)
-    gon.push_back({a * std::cos(2 * M_PI * k / n), a * std::sin(2 * M_PI * k / n)});
-  const polygon_patch<double> patch(gon);
+  const polygon_patch<double> patch(spinslide_test::regular_polygon(256, a));
   const auto disk = spinslide::uniform_disk<>();
   std::mt19937 rng(37);
   std::uniform_real_distribution<double> u(-1, 1);

@@ -31,6 +31,8 @@
 
 #include "patch_quadrature.hpp"
 
+#include "regular_polygon.hpp"
+
 namespace {
 
 using spinslide::centre_of_pressure;
@@ -38,14 +40,7 @@ using spinslide::planar_twist;
 using spinslide::polygon_patch;
 using point = std::array<double, 2>;
 
-std::vector<point> regular_polygon(int n, double radius = 1) {
-  std::vector<point> v;
-  v.reserve(static_cast<std::size_t>(n));
-  const double pi = boost::math::constants::pi<double>();
-  for (int k = 0; k < n; ++k)
-    v.push_back({radius * std::cos(2 * pi * k / n), radius * std::sin(2 * pi * k / n)});
-  return v;
-}
+using spinslide_test::regular_polygon;
 
 // The disk of radius 1 sliding along x with speed ε and spinning with ω = 1:
 // F = −𝓕(ε) x̂ (antiparallel to v by symmetry), τ = −𝓣(ε) (against the spin).

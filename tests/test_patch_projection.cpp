@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "random_metric.hpp"
+#include "regular_polygon.hpp"
 
 namespace {
 
@@ -39,9 +40,8 @@ std::vector<polygon_patch<double>> patches() {
   const std::vector<point> square{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   const std::vector<point> sole{{-0.1, -0.04}, {0.12, -0.04}, {0.12, 0.06}, {-0.1, 0.06}};
   const std::vector<point> triangle{{0, 0}, {2, 0.3}, {0.5, 1.5}};
-  std::vector<point> hexagon;
-  for (int k = 0; k < 6; ++k)
-    hexagon.push_back({0.3 + std::cos(k * M_PI / 3), -0.2 + std::sin(k * M_PI / 3)});
+  std::vector<point> hexagon = spinslide_test::regular_polygon(6);
+  for (auto& v : hexagon) v = {v[0] + 0.3, v[1] - 0.2};
   const std::vector<point> strip{{-1, -0.01}, {1, -0.01}, {1, 0.01}, {-1, 0.01}};
   return {polygon_patch<double>(square),
           polygon_patch<double>(square, centre_of_pressure<double>{{0.2, -0.1}}),
@@ -79,6 +79,21 @@ struct checked_projection {
   bool sticking;
 };
 
+// A slipping answer's two defining conditions: p is the friction wrench of
+// its slip (on the set), and the slip in the limit set's units, −(v, ℓω),
+// is M(z − p) (optimal).
+void expect_on_set_and_optimal(const polygon_patch<double>& patch, const matrix& m,
+                               const std::array<double, 3>& z, const std::array<double, 3>& p,
+                               const planar_twist<double>& slip) {
+  const double l = patch.radius();
+  const auto q = set_point(patch, slip);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(p[i], q[i], 1e-12) << "component " << i;
+  const std::array<double, 3> s{-slip.velocity[0], -slip.velocity[1], -l * slip.omega};
+  const auto target = times(m, {z[0] - p[0], z[1] - p[1], z[2] - p[2]});
+  const double size = std::fabs(target[0]) + std::fabs(target[1]) + std::fabs(target[2]);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(s[i], target[i], 1e-9 * (size + 1e-3));
+}
+
 // Projects z and checks the answer's two defining conditions.
 checked_projection project_and_check(const polygon_patch<double>& patch, const matrix& m,
                                      const std::array<double, 3>& z,
@@ -93,15 +108,7 @@ checked_projection project_and_check(const polygon_patch<double>& patch, const m
     EXPECT_EQ(r.slip.omega, 0.0);
     return {z, p, true};
   }
-  const double l = patch.radius();
-  // On the set: p is the friction wrench of its slip.
-  const auto q = set_point(patch, r.slip);
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(p[i], q[i], 1e-12) << "component " << i;
-  // Optimal: the slip in the limit set's units, −(v, ℓω), is M(z − p).
-  const std::array<double, 3> s{-r.slip.velocity[0], -r.slip.velocity[1], -l * r.slip.omega};
-  const auto target = times(m, {z[0] - p[0], z[1] - p[1], z[2] - p[2]});
-  const double size = std::fabs(target[0]) + std::fabs(target[1]) + std::fabs(target[2]);
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(s[i], target[i], 1e-9 * (size + 1e-3));
+  expect_on_set_and_optimal(patch, m, z, p, r.slip);
   return {z, p, false};
 }
 
@@ -182,11 +189,7 @@ TEST(PatchProjection, WarmStartsGiveTheColdAnswer) {
 // A 256-gon under uniform pressure is the disk to 1e-4 (its 𝓕, 𝓣 differ by
 // about (π/n)²/6 relatively): the projections agree to that.
 TEST(PatchProjection, ManyGonAgreesWithTheRoundDisksProjection) {
-  std::vector<point> gon;
-  const int n = 256;
-  for (int k = 0; k < n; ++k)
-    gon.push_back({std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n)});
-  const polygon_patch<double> patch(gon);
+  const polygon_patch<double> patch(spinslide_test::regular_polygon(256));
   const auto disk = spinslide::uniform_disk<>();
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(-1.5, 1.5);

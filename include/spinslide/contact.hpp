@@ -25,6 +25,7 @@
 #include <spinslide/contact/patch_impulse.hpp>
 #include <spinslide/contact/patch_limit_set.hpp>
 #include <spinslide/contact/patch_result.hpp>
+#include <spinslide/contact/patch_trial_cap.hpp>
 #include <spinslide/contact/planar_metric.hpp>
 #include <spinslide/contact/spring_friction.hpp>
 #include <spinslide/contact/trial_cap.hpp>

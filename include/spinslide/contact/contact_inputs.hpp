@@ -102,6 +102,15 @@ struct patch_impulse_contact {
   friction_coefficient<Real> friction;  ///< μ
 };
 
+/// One flat patch's contact under a normal force, for its trial cap
+/// (patch_trial_cap.hpp): the patch itself gives the size, so no radius.
+template <class Real>
+struct patch_force_contact {
+  using value_type = Real;              ///< the floating type
+  normal_force<Real> normal;            ///< N
+  friction_coefficient<Real> friction;  ///< μ
+};
+
 /// One contact under a normal force, for the force-level laws
 /// (spring_friction.hpp).
 template <class Real>

@@ -50,6 +50,18 @@ class patch_slip_model {
     Real size;                 // |s|
   };
 
+  // Its Hessian costs up to several wrenches (far from the patch, central
+  // differences): slip_newton keeps it across a step with r = |δ|/|s| ≤
+  // ε^{1/3} (6e-6 in double, 5e-3 in float).  The Hessian is then off by
+  // about r relatively, and a converged last step (r ≤ ε^{2/3}) puts the
+  // answer's point ∇D + ∇²Dδ off by r·ε^{2/3} ≤ ε.
+  static constexpr bool reuses_hessian = true;
+  static Real hessian_reuse_limit() {
+    using std::cbrt;
+    static const Real limit = cbrt(std::numeric_limits<Real>::epsilon());
+    return limit * limit;
+  }
+
   explicit patch_slip_model(const polygon_patch<Real>& patch)
       : p_(patch), length_(patch_length(patch)) {}
 
@@ -86,6 +98,16 @@ class patch_slip_model {
     const Real r = 1 / length_;
     x.hessian = {h[0][0], h[0][1], h[0][2] * r, h[1][1], h[1][2] * r, h[2][2] * r * r};
     return finite(x.hessian);
+  }
+
+  // x moved to s ≠ 0 (finite), its Hessian kept; false where s is out of range.
+  bool moved(const vec& s, point& x) const {
+    static const Real low = boost::math::tools::min_value<Real>(),
+                      high = boost::math::tools::max_value<Real>();
+    const Real s2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
+    if (!(s2 >= low && s2 <= high)) return false;
+    plain(s, x);
+    return true;
   }
 
   // A point without its Hessian at s ≠ 0.

@@ -51,6 +51,9 @@ class round_dissipation {
     Real slope;
   };
 
+  // Its Hessian comes with its evaluation: never kept across a step (slip_newton.hpp).
+  static constexpr bool reuses_hessian = false;
+
   explicit round_dissipation(const Profile& profile) : p_(profile) {}
 
   values at_ratio(Real eps) const {

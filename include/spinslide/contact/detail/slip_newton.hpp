@@ -56,6 +56,18 @@ bool slip_newton(const Dissipation& d, const vector3<typename Dissipation::value
     const Real r2 = Dissipation::step_ratio(x, step);
     if (r2 <= limit && evaluated) return true;
     const Real t = r2 > Real(0.25) ? Real(1 / (2 * sqrt(r2))) : Real(1);
+    // A model whose Hessian costs several evaluations (a flat patch's) may
+    // keep it across a step within its reuse limit: the next step then errs
+    // by about that step's size times its own, and the answer's point
+    // ∇D + ∇²Dδ by as little (below rounding at the limit).
+    if constexpr (Dissipation::reuses_hessian) {
+      if (r2 <= Dissipation::hessian_reuse_limit()) {
+        if (!d.moved(shifted(x.s, step, t), x)) return false;
+        ms = multiply(inverse, x.s);
+        evaluated = true;
+        continue;
+      }
+    }
     if (!d.at(shifted(x.s, step, t), x)) return false;
     ms = multiply(inverse, x.s);
     evaluated = true;
