@@ -4,13 +4,14 @@
 // The box scenes of issue 42 item 6 (engines/testing/box_scenes.hpp) in
 // MuJoCo, run with any step function: MuJoCo's own friction (mj_step, condim
 // 3, 4 or 6) or the adapter's (coupled_friction::step); what each run
-// measures.
-#ifndef SPINSLIDE_ENGINES_MUJOCO_TESTS_BOX_RUNS_HPP
-#define SPINSLIDE_ENGINES_MUJOCO_TESTS_BOX_RUNS_HPP
+// measures.  Used by engines/mujoco/tests/test_mujoco_box.cpp and the
+// example beside it (main.cpp).
+#ifndef SPINSLIDE_EXAMPLES_MUJOCO_BOX_RUNS_HPP
+#define SPINSLIDE_EXAMPLES_MUJOCO_BOX_RUNS_HPP
 
 #include <mujoco/mujoco.h>
 
-#include "../examples/mujoco_disk/scene.hpp"
+#include "../mujoco_disk/scene.hpp"
 #include "box_scenes.hpp"
 
 #include <array>
@@ -164,4 +165,4 @@ inline bool run_tipping(const mjModel* m, mjData* d, const stepper& step,
 
 }  // namespace box_runs
 
-#endif  // SPINSLIDE_ENGINES_MUJOCO_TESTS_BOX_RUNS_HPP
+#endif  // SPINSLIDE_EXAMPLES_MUJOCO_BOX_RUNS_HPP
