@@ -11,8 +11,8 @@
 
 #include <spinslide/engines/mujoco.hpp>
 
-#include "box_checks.hpp"
 #include "../examples/mujoco_box/box_runs.hpp"
+#include "box_checks.hpp"
 #include "box_scenes.hpp"
 
 #include <array>
