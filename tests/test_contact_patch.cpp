@@ -288,3 +288,42 @@ TEST(ContactPatch, RandomDegenerateCloudsNeverThrowNorGiveNaN) {
     }
   }
 }
+
+// What fuzz_contact_patch found, each once a throw or a NaN: loads times
+// coordinates beyond the largest double (the centre's sums overflowed); the
+// loads' centre on the vertex of a sliver 1e-6 across (polygon_patch found
+// it a rounding outside); a sliver whose short edge is 2e-7 of its length
+// under a tolerance of 0 (the polygon's pressure solve loaded nothing); a
+// coordinate that is a subnormal beside the others (the wrench's edge sums
+// lost a pivot that close to a vertex).
+TEST(ContactPatch, WhatFuzzingFound) {
+  const auto finite_wrenches = [](const polygon_patch<double>& patch) {
+    for (const auto& w :
+         {planar_twist<double>{{0.3, -0.1}, 2.0}, planar_twist<double>{{0, 0}, -1.0},
+          planar_twist<double>{{0.3, 0.4}, 0.0}}) {
+      const auto f = spinslide::friction_wrench(patch, w);
+      if (!std::isfinite(f.force[0] + f.force[1] + f.torque)) return false;
+    }
+    return true;
+  };
+  const points overflow{{{7.3e196, 1.6}, 1.7e120}, {{0.7, 1.0e221}, 0.77}, {{0.37, -3.3e112}, 0.9}};
+  const auto far = contact_patch(overflow);
+  EXPECT_TRUE(std::isfinite(far.centre()[0]) && std::isfinite(far.centre()[1]));
+  EXPECT_EQ(far.shape(), patch_shape::point);
+  const points sliver{{{0.0300000005507530427551, -0.0199999991887761935372}, 3.3e41},
+                      {{0.0299999999999999988898, -0.0200000000000000004163}, 3.2e176},
+                      {{0.0299990484614043248501, -0.0199991700236014750824}, 0.21}};
+  polygon_patch<double> on_vertex = polygon_patch<double>::point({0, 0});
+  ASSERT_NO_THROW(on_vertex = contact_patch(sliver));
+  EXPECT_NEAR(on_vertex.centre()[0], 0.03, 1e-15);
+  EXPECT_TRUE(finite_wrenches(on_vertex));
+  points short_edge{{{0.0300000000000004603262, -0.0200000000000063772598}, 0},
+                    {{0.0299999998999999975546, -0.0200000001000000017515}, 0}};
+  for (int i = 0; i < 6; ++i) short_edge.push_back({{0.029, -0.021}, 0});
+  EXPECT_TRUE(finite_wrenches(contact_patch(short_edge, merge_tolerance<double>{0})));
+  const points subnormal{{{-3.18839202664133069083e-307, 2.19766720473301768735}, 0.68},
+                         {{5.4681986958194851322e-71, 0.032918977522178989592}, 0.96},
+                         {{1.18575755001899170602e-321, 0}, 0},
+                         {{0, 0}, 0}};
+  EXPECT_TRUE(finite_wrenches(contact_patch(subnormal, merge_tolerance<double>{0})));
+}

@@ -22,6 +22,7 @@
 
 #include <spinslide/base/named_inputs.hpp>
 #include <spinslide/values/detail/patch_geometry.hpp>
+#include <spinslide/values/detail/patch_outline.hpp>
 #include <spinslide/values/polygon_patch.hpp>
 
 #include <boost/math/tools/precision.hpp>
@@ -31,6 +32,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 #include <type_traits>
 
 namespace spinslide {
@@ -68,6 +70,7 @@ struct gathered_points {
   Real spread = 0;
   Real merge = 0;
   bool loaded = false;  // some point carries a load
+  bool far = false;     // coordinates beyond √max/16 or all below 16√min: a point
 };
 
 /// |a − b|², compared squared where only the order matters (no square
@@ -84,11 +87,15 @@ Real distance(const point2<Real>& a, const point2<Real>& b) {
   return sqrt(squared_distance(a, b));
 }
 
-/// The relative tolerance as used: at least 1024 ε (below, the polygon's own
-/// checks would see a sliver as flat), at most 1/16; NaN counts as the least.
+/// The relative tolerance as used: at least 1024 ε and √ε of the working
+/// type (below, the polygon's own checks, and its pressure solve on a
+/// sliver whose short edge is 1e-7 of its size, fail), at most 1/16; NaN
+/// counts as the least.
 template <class Real>
 Real usable_tolerance(Real relative) {
-  const Real least = 1024 * boost::math::tools::epsilon<Real>();
+  using std::sqrt;
+  const Real least = std::max(Real(1024 * boost::math::tools::epsilon<Real>()),
+                              Real(boost::math::tools::root_epsilon<working_type<Real>>()));
   if (!(relative >= least)) return least;
   return relative < Real(1) / 16 ? relative : Real(1) / 16;
 }
@@ -103,41 +110,92 @@ Real coordinate_size(const vertex_list<Real>& points, const point2<Real>& e) {
   return size;
 }
 
-/// The finite points, their load-weighted centre (the plain mean if no
-/// point is loaded) and spread, the distinct positions (a point within the
-/// merge distance of an earlier one is that one).
-template <class Real, class Range>
-gathered_points<Real> gather_points(const Range& points, Real relative) {
+/// A load as it counts: 0 if negative or not finite.
+template <class Real>
+Real counted_load(Real load) {
   using std::isfinite;
-  gathered_points<Real> g;
-  vertex_list<Real> finite;
-  point2<Real> mean{}, moment{};
-  Real total = 0;
+  return isfinite(load) && load > 0 ? load : Real(0);
+}
+
+/// The finite points (a coordinate below 64 ε of the largest, its rounding,
+/// as 0: a subnormal distance from a vertex is where the wrench's edge sums
+/// lose it) and their loads, the largest coordinate and the largest load.
+template <class Real>
+struct finite_points {
+  vertex_list<Real> positions;
+  vertex_list<Real> loads;  // (load, 0)
+  Real size = 0, heaviest = 0;
+};
+
+template <class Real, class Range>
+finite_points<Real> finite_points_of(const Range& points) {
+  using std::fabs;
+  using std::isfinite;
+  finite_points<Real> f;
   for (const auto& p : points) {
     if (!isfinite(p.position[0]) || !isfinite(p.position[1])) continue;
-    finite.push_back(p.position);
-    const Real w = isfinite(p.load) && p.load > 0 ? p.load : Real(0);
+    f.size = std::max(f.size, std::max(fabs(p.position[0]), fabs(p.position[1])));
+    f.heaviest = std::max(f.heaviest, counted_load(p.load));
+  }
+  const Real noise = 64 * boost::math::tools::epsilon<Real>() * f.size;
+  const auto snapped = [noise](Real x) { return fabs(x) <= noise ? Real(0) : x; };
+  for (const auto& p : points) {
+    if (!isfinite(p.position[0]) || !isfinite(p.position[1])) continue;
+    f.positions.push_back({snapped(p.position[0]), snapped(p.position[1])});
+    f.loads.push_back({counted_load(p.load), Real(0)});
+  }
+  return f;
+}
+
+/// The plain mean of the points and their load-weighted mean (the plain one
+/// if no point is loaded; `loaded` says which), the sums scaled by the
+/// largest coordinate and the largest load, so that neither overflows.
+template <class Real>
+std::array<point2<Real>, 2> means(const finite_points<Real>& f, bool& loaded) {
+  const std::size_t n = f.positions.size();
+  const Real unit = f.size > 0 ? f.size : Real(1);
+  point2<Real> mean{}, moment{};
+  Real total = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Real w = f.heaviest > 0 ? f.loads[i][0] / f.heaviest : Real(0);
     total += w;
     for (std::size_t k = 0; k < 2; ++k) {
-      mean[k] += p.position[k];
-      moment[k] += w * p.position[k];
+      mean[k] += f.positions[i][k] / unit / Real(n);
+      moment[k] += w * (f.positions[i][k] / unit);
     }
   }
-  const std::size_t n = finite.size();
-  if (n == 0) return g;
-  for (std::size_t k = 0; k < 2; ++k) mean[k] /= Real(n);
-  g.loaded = total > 0 && isfinite(total);
-  g.centre = g.loaded ? point2<Real>{moment[0] / total, moment[1] / total} : mean;
-  Real spread2 = 0;
-  for (const auto& x : finite) spread2 = std::max(spread2, squared_distance(x, mean));
+  loaded = total > 0;
+  const point2<Real> plain{mean[0] * unit, mean[1] * unit};
+  return {plain, loaded ? point2<Real>{moment[0] / total * unit, moment[1] / total * unit} : plain};
+}
+
+/// The finite points, their load-weighted centre and spread, the distinct
+/// positions (a point within the merge distance of an earlier one is that
+/// one).
+template <class Real, class Range>
+gathered_points<Real> gather_points(const Range& points, Real relative) {
   using std::sqrt;
+  gathered_points<Real> g;
+  const finite_points<Real> f = finite_points_of<Real>(points);
+  if (f.positions.size() == 0) return g;
+  const auto m = means(f, g.loaded);
+  g.centre = m[1];
+  // Beyond √max/16 the squares below (and the polygon's own) overflow, below
+  // 16√min they underflow: a contact that far from its origin, or that
+  // small about it, is a point at its centre.
+  g.far = !(f.size <= sqrt(std::numeric_limits<Real>::max()) / 16) ||
+          f.size < 16 * sqrt(std::numeric_limits<Real>::min());
+  if (g.far) return g;
+  Real spread2 = 0;
+  for (const auto& x : f.positions) spread2 = std::max(spread2, squared_distance(x, m[0]));
   g.spread = sqrt(spread2);
   // Not below the rounding of the coordinates: points that differ by
   // rounding only are one point, however small their spread.
-  g.merge = std::max(usable_tolerance(relative) * g.spread,
-                     64 * boost::math::tools::epsilon<Real>() * coordinate_size(finite, g.centre));
+  g.merge =
+      std::max(usable_tolerance(relative) * g.spread,
+               64 * boost::math::tools::epsilon<Real>() * coordinate_size(f.positions, g.centre));
   const Real merge2 = g.merge * g.merge;
-  for (const auto& x : finite) {
+  for (const auto& x : f.positions) {
     bool repeated = false;
     for (const auto& u : g.unique) repeated = repeated || squared_distance(x, u) <= merge2;
     if (!repeated) g.unique.push_back(x);
@@ -239,23 +297,18 @@ Real fraction_along(const point2<Real>& a, const point2<Real>& b, const point2<R
   return t < 0 ? Real(0) : (t > 1 ? Real(1) : t);
 }
 
-/// e, if it is inside the counter-clockwise `hull` by at least `margin`;
-/// otherwise its nearest point on the outline moved `margin` towards the
-/// vertices' mean (inside the hull, since the hull is convex).  The centre
-/// of a convex combination of the points is inside the hull but for
-/// rounding and for the points the hull dropped as flat (at most the merge
-/// distance out).
+/// e if it is inside the counter-clockwise `hull`, otherwise its nearest
+/// point on the outline.  The centre of a convex combination of the points
+/// is inside the hull but for rounding and for the points the hull dropped
+/// as flat (at most the merge distance out).
 template <class Real>
-point2<Real> clamped_centre(const vertex_list<Real>& hull, const point2<Real>& e, Real margin) {
-  Real inside = 0;
-  point2<Real> nearest = e, mean{};
+point2<Real> clamped_centre(const vertex_list<Real>& hull, const point2<Real>& e) {
+  if (nearest_edge(hull, e).distance >= 0) return e;
+  point2<Real> nearest = e;
   Real nearest_distance = -1;
-  const std::size_t m = hull.size();
-  for (std::size_t k = 0; k < m; ++k) {
+  for (std::size_t k = 0; k < hull.size(); ++k) {
     const point2<Real>& a = hull[k];
     const point2<Real>& b = hull.next(k);
-    const Real signed_distance = turn(a, b, e) / distance(a, b);
-    inside = k == 0 ? signed_distance : std::min(inside, signed_distance);
     const Real t = fraction_along(a, b, e);
     const point2<Real> p{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
     const Real d = squared_distance(p, e);
@@ -263,18 +316,25 @@ point2<Real> clamped_centre(const vertex_list<Real>& hull, const point2<Real>& e
       nearest_distance = d;
       nearest = p;
     }
-    mean[0] += a[0] / Real(m);
-    mean[1] += a[1] / Real(m);
   }
-  if (inside >= margin) return e;
-  const Real to_mean = distance(mean, nearest);
-  if (!(to_mean > 0)) return mean;
-  return {nearest[0] + margin * (mean[0] - nearest[0]) / to_mean,
-          nearest[1] + margin * (mean[1] - nearest[1]) / to_mean};
+  return nearest;
+}
+
+/// The polygon's largest distance of a vertex from the vertices' mean (its
+/// size, as polygon_patch measures it).
+template <class Real>
+Real outline_scale(const vertex_list<Real>& hull) {
+  point2<Real> mean{};
+  for (const auto& v : hull)
+    for (std::size_t k = 0; k < 2; ++k) mean[k] += v[k] / Real(hull.size());
+  Real scale2 = 0;
+  for (const auto& v : hull) scale2 = std::max(scale2, squared_distance(v, mean));
+  using std::sqrt;
+  return sqrt(scale2);
 }
 
 /// The line patch on a→b with its centre at e's nearest point on it, or a
-/// point patch at e where the segment is shorter than 1/8 of its distance
+/// point patch at e where the segment is shorter than 1/4 of its distance
 /// from the origin (the origin's rounding would then put the centre off the
 /// segment by more than polygon_patch::segment accepts).
 template <class Real>
@@ -282,11 +342,27 @@ polygon_patch<Real> line_patch(const point2<Real>& a, const point2<Real>& b,
                                const point2<Real>& e) {
   const Real length = distance(a, b);
   const point2<Real> zero{};
-  if (!(8 * length >= std::max(distance(a, zero), distance(b, zero))))
+  if (!(4 * length >= std::max(distance(a, zero), distance(b, zero))))
     return polygon_patch<Real>::point(e);
   const Real t = fraction_along(a, b, e);
   const point2<Real> c{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
   return polygon_patch<Real>::segment(a, b, centre_of_pressure<Real>{c});
+}
+
+/// The polygon `hull` under the linear (no-tension) pressure of centre e
+/// (inside or on it).  polygon_patch puts the load of a centre within its
+/// boundary band of an edge (64√ε_working of its size) on that edge; here
+/// that band, widened to the rounding of the coordinates, is decided before
+/// the constructor is called, so that a centre it would find a rounding
+/// outside (a centre on a vertex of a sliver) never reaches it.
+template <class Real>
+polygon_patch<Real> area_patch(const vertex_list<Real>& hull, const point2<Real>& e) {
+  using W = working_type<Real>;
+  const Real band = std::max(Real(64 * boost::math::tools::root_epsilon<W>()) * outline_scale(hull),
+                             64 * boost::math::tools::epsilon<Real>() * coordinate_size(hull, e));
+  const edge_distance<Real> near = nearest_edge(hull, e);
+  if (!(near.distance > band)) return line_patch(hull[near.edge], hull.next(near.edge), e);
+  return polygon_patch<Real>(hull, centre_of_pressure<Real>{e});
 }
 
 }  // namespace detail
@@ -305,9 +381,14 @@ polygon_patch<Real> line_patch(const point2<Real>& a, const point2<Real>& b,
 ///    edge), its centre the load-weighted mean's nearest point on it;
 ///  - a point patch at the load-weighted mean where all points merge into
 ///    one, or there is one point; at the origin where no point is finite.
-/// Points with a non-finite coordinate are left out.  Never throws; no heap
-/// allocation for up to 8 points.  `tolerance` below 1024 ε (or NaN) is
-/// raised to it, above 1/16 lowered to it.
+/// Points with a non-finite coordinate are left out, a coordinate below 64 ε
+/// of the largest counts as 0; a coordinate beyond
+/// √(max)/16 (8e152 in double), or all of them below 16√(min) (2e-153),
+/// make a point patch at the loads' centre.
+/// Never throws; no heap
+/// allocation for up to 8 points.  `tolerance` below 1024 ε and √ε of the
+/// working type (1.5e-8 in double) or NaN is raised to that, above 1/16
+/// lowered to it.
 template <class Range, class Real = typename std::decay_t<
                            decltype(*std::begin(std::declval<const Range&>()))>::value_type>
 polygon_patch<Real> contact_patch(const Range& points,
@@ -315,6 +396,7 @@ polygon_patch<Real> contact_patch(const Range& points,
                                       Real(1e-6)}) {
   using point = detail::point2<Real>;
   detail::gathered_points<Real> g = detail::gather_points<Real>(points, tolerance.value);
+  if (g.far) return polygon_patch<Real>::point(g.centre);
   if (g.unique.size() == 0) return polygon_patch<Real>::point(point{});
   if (g.unique.size() == 1) return polygon_patch<Real>::point(g.centre);
   const detail::vertex_list<Real> hull = detail::convex_hull(g.unique, g.merge);
@@ -325,14 +407,7 @@ polygon_patch<Real> contact_patch(const Range& points,
   if (!(area2 > relative * diameter * diameter))
     return detail::line_patch(ends[0], ends[1], g.centre);
   if (!g.loaded) return polygon_patch<Real>(hull);
-  // The clamp's margin: a few roundings of the largest coordinate (the
-  // polygon's check allows 16 ε of its size outside).  A hull thinner than
-  // that (an origin ~10⁷ sizes away) is a point at the centre.
-  const Real margin =
-      8 * boost::math::tools::epsilon<Real>() * detail::coordinate_size(hull, g.centre);
-  if (!(margin * diameter < area2 / 8)) return polygon_patch<Real>::point(g.centre);
-  return polygon_patch<Real>(
-      hull, centre_of_pressure<Real>{detail::clamped_centre(hull, g.centre, margin)});
+  return detail::area_patch(hull, detail::clamped_centre(hull, g.centre));
 }
 
 }  // namespace spinslide
