@@ -20,6 +20,7 @@ Built from the C++ headers of the same version (docs/python.md).
 
 import sys as _sys
 import time as _time
+from typing import NamedTuple as _NamedTuple
 
 import numpy as _np
 
@@ -27,6 +28,11 @@ from ._core import (  # noqa: F401  (re-exported)
     Annulus,
     Boussinesq,
     Hertz,
+    PatchShape,
+    PlateEnding,
+    PlateFixedPoint,
+    PlateThrow,
+    PolygonPatch,
     Profile,
     RadialProfile,
     RatioFlowZero,
@@ -51,6 +57,8 @@ from ._core import (  # noqa: F401  (re-exported)
     terminal_motion,
     terminal_ratio,
     terminal_window,
+    plate_terminal_points,
+    throw_plate,
     torque,
     torque_at_force,
     torque_derivative,
@@ -69,6 +77,10 @@ __all__ = [
     "simulate_throw", "simulate_throw_si", "stop_time", "trajectory", "stop_results", "StopResults",
     "project_to_limit_set", "LimitProjection", "impulse_friction", "spring_history_friction",
     "FrictionResult",
+    "PolygonPatch", "PatchShape", "friction_wrench", "PlanarWrench", "friction_dissipation",
+    "PatchDissipation", "throw_plate", "PlateThrow", "PlateEnding", "plate_terminal_points",
+    "PlateFixedPoint",
+    "limit_surface_twist", "LimitSurfacePoint", "PatchProjection", "PatchImpulse",
 ]
 
 
@@ -111,6 +123,31 @@ class FrictionResult(_Arrays):
     (pass them to the next step)."""
 
     _fields = ("force", "torque", "sticking", "ratio")
+
+
+class PatchProjection(_Arrays):
+    """A flat patch's projection onto its limit set for arrays of trials: force
+    (..., 2) and torque (the limit set's units), sticking, ratio (the slip's
+    |v|/(l |omega|), NaN where sticking), and the slip: slip_velocity (..., 2)
+    and slip_spin, the twist whose friction wrench is the answer (zero where
+    sticking)."""
+
+    _fields = ("force", "torque", "sticking", "ratio", "slip_velocity", "slip_spin")
+
+
+class PatchImpulse(PatchProjection):
+    """A flat patch's impulse law for arrays of contacts: the impulse force
+    (..., 2) and torque (the angular impulse about the patch origin),
+    sticking, ratio, and the velocity after the step, slip_velocity (..., 2)
+    and slip_spin (zero where sticking)."""
+
+
+class LimitSurfacePoint(_Arrays):
+    """limit_surface_twist's result: the twist (velocity (..., 2), spin) whose
+    friction wrench is the limit surface's point on each wrench's ray,
+    |v|^2 + (l omega)^2 = 1, and the wrench's gauge (1 on the surface)."""
+
+    _fields = ("velocity", "spin", "gauge")
 
 
 class _SpringResult(FrictionResult):
@@ -175,27 +212,94 @@ def stop_results(profile, inertia_ratio, v0, omega0, threads=0, progress=False):
                                            callback))
 
 
-def project_to_limit_set(profile, force, torque, torque_weight):
-    """The point of the profile's limit set L nearest to (force, torque) in
-    (f - force)^2 + torque_weight (t - torque)^2, for forces in units of mu N and
-    torques in units of mu N a (each >= 0, torque_weight > 0; array-likes,
-    broadcast).  Inside L the point sticks (unchanged); outside it lands on the
-    curve at ratio eps (inf at (1, 0), 0 at (0, <r>)).  Returns LimitProjection."""
+def project_to_limit_set(profile, force, torque, torque_weight=None, *, metric=None,
+                         start_velocity=(0.0, 0.0), start_spin=0.0):
+    """The nearest point of a limit set: of a round profile's, or of a flat patch's.
+
+    A profile: project_to_limit_set(profile, force, torque, torque_weight), the
+    point of L nearest to (force, torque) in (f - force)^2 + torque_weight (t -
+    torque)^2, for forces in units of mu N and torques in units of mu N a (each
+    >= 0, torque_weight > 0; array-likes, broadcast).  Inside L the point sticks
+    (unchanged); outside it lands on the curve at ratio eps (inf at (1, 0), 0
+    at (0, <r>)).  Returns LimitProjection.
+
+    A PolygonPatch: project_to_limit_set(patch, force, torque, metric), the
+    point p of the patch's limit set nearest to the trial (force (..., 2),
+    torque (...)) in (p - trial)^T M (p - trial), M = metric (..., 3, 3),
+    symmetric positive definite, over (F_x, F_y, tau/l).  Everything is in the
+    limit set's units: the force per unit mu N, the torque about the patch
+    origin per unit mu N l, l = patch.radius.  start_velocity (..., 2) and
+    start_spin: the contact's last slip (the last result's slip_velocity and
+    slip_spin), which only speeds the search.  Returns PatchProjection: force,
+    torque, sticking, ratio (|v|/(l |omega|) of the slip, NaN where it
+    sticks), and the slip, the twist (slip_velocity, slip_spin) whose friction
+    wrench is the answer (zero where it sticks).  The metric may also be
+    passed as the fourth argument."""
+    if isinstance(profile, PolygonPatch):
+        if metric is None:
+            metric = torque_weight
+        if metric is None:
+            raise TypeError("spinslide.project_to_limit_set(patch, force, torque, metric): "
+                            "a patch needs its metric")
+        return PatchProjection(_core._project_patch_to_limit_set(
+            profile, force, torque, metric, start_velocity, start_spin))
+    if metric is not None or torque_weight is None:
+        raise TypeError("spinslide.project_to_limit_set(profile, force, torque, torque_weight): "
+                        "a round profile takes a torque_weight, not a metric")
     return LimitProjection(_core._project_to_limit_set(profile, force, torque, torque_weight))
 
 
-def impulse_friction(profile, velocity, spin, inverse_mass, radius, normal_impulse,
-                     friction_coefficient, start_ratio=0.0):
+def limit_surface_twist(patch, force, torque):
+    """The inverse of friction_wrench on a patch's limit surface.
+
+    For wrenches (force (..., 2) per unit mu N, torque (...) about the patch
+    origin per unit mu N, in the vertices' length unit: friction_wrench's
+    units), the twist whose friction wrench is the limit surface's point on
+    the wrench's ray from 0, normalised to |v|^2 + (l omega)^2 = 1, and the
+    wrench's gauge: 1 on the surface, below 1 inside the set, above outside.
+    Returns LimitSurfacePoint(velocity (..., 2), spin (...), gauge (...)).
+    A zero or non-finite wrench raises ValueError, as does one off a point
+    patch's flat set."""
+    return LimitSurfacePoint(_core._limit_surface_twist(patch, force, torque))
+
+
+def impulse_friction(profile, velocity, spin, inverse_mass, radius=None, normal_impulse=None,
+                     friction_coefficient=None, start_ratio=0.0, *, start_velocity=(0.0, 0.0),
+                     start_spin=0.0):
     """The friction impulse of one step for one contact or an array of contacts.
 
-    velocity (..., 2): the relative sliding velocity before friction in the
-    tangent plane; spin (...): the relative angular velocity about the normal;
-    inverse_mass (..., 3, 3): the contact's inverse mass over (v_x, v_y, w);
-    radius: the patch radius a >= 0; normal_impulse: the step's normal impulse
-    >= 0; friction_coefficient: mu >= 0; start_ratio: the last step's ratio
-    (0: none), which only speeds the search.  All broadcast together.
-    Returns FrictionResult: force is the impulse (P_x, P_y), torque the angular
-    impulse L; the exact stick or slip of the coupled law."""
+    A profile: impulse_friction(profile, velocity, spin, inverse_mass, radius,
+    normal_impulse, friction_coefficient, start_ratio=0).  velocity (..., 2):
+    the relative sliding velocity before friction in the tangent plane; spin
+    (...): the relative angular velocity about the normal; inverse_mass
+    (..., 3, 3): the contact's inverse mass over (v_x, v_y, w); radius: the
+    patch radius a >= 0; normal_impulse: the step's normal impulse >= 0;
+    friction_coefficient: mu >= 0; start_ratio: the last step's ratio (0:
+    none), which only speeds the search.  All broadcast together.  Returns
+    FrictionResult: force is the impulse (P_x, P_y), torque the angular
+    impulse L; the exact stick or slip of the coupled law.
+
+    A PolygonPatch: impulse_friction(patch, velocity, spin, inverse_mass, *,
+    normal_impulse, friction_coefficient, start_velocity=0, start_spin=0)
+    (a patch has no radius: the contact's numbers by keyword).  velocity and
+    spin are the patch origin's, in the patch's axes; start_velocity and
+    start_spin the last step's slip.  Returns PatchImpulse: the impulse
+    (force (..., 2), torque: L about the patch origin), sticking, ratio, and
+    the slip (slip_velocity, slip_spin): the velocity after the step, zero
+    where it sticks."""
+    if isinstance(profile, PolygonPatch):
+        if radius is not None:
+            raise TypeError("spinslide.impulse_friction(patch, ...): a patch has no radius; pass "
+                            "normal_impulse= and friction_coefficient= by keyword")
+        if normal_impulse is None or friction_coefficient is None:
+            raise TypeError("spinslide.impulse_friction(patch, ...) needs normal_impulse= and "
+                            "friction_coefficient=")
+        return PatchImpulse(_core._patch_impulse_friction(
+            profile, velocity, spin, inverse_mass, normal_impulse, friction_coefficient,
+            start_velocity, start_spin))
+    if radius is None or normal_impulse is None or friction_coefficient is None:
+        raise TypeError("spinslide.impulse_friction(profile, velocity, spin, inverse_mass, radius, "
+                        "normal_impulse, friction_coefficient) needs all seven")
     return FrictionResult(_core._impulse_friction(profile, velocity, spin, inverse_mass, radius,
                                                   normal_impulse, friction_coefficient,
                                                   start_ratio))
@@ -215,3 +319,40 @@ def spring_history_friction(profile, displacement, twist, displacement_increment
     return _SpringResult(_core._spring_history_friction(
         profile, displacement, twist, curve_ratio, displacement_increment, twist_increment,
         tangential_stiffness, twisting_stiffness, radius, normal_force, friction_coefficient))
+
+
+class PlanarWrench(_NamedTuple):
+    """A patch's friction wrench per unit mu N: force (..., 2) and torque (...)
+    about the patch origin (a tuple: force, torque = friction_wrench(...))."""
+
+    force: _np.ndarray
+    torque: _np.ndarray
+
+
+class PatchDissipation(_NamedTuple):
+    """A patch's dissipation D per unit mu N (...), its gradient (..., 3) in
+    (v_x, v_y, omega), which is minus the wrench, and its Hessian (..., 3, 3)."""
+
+    value: _np.ndarray
+    gradient: _np.ndarray
+    hessian: _np.ndarray
+
+
+def friction_wrench(patch, velocity, spin):
+    """The exact friction wrench of a PolygonPatch moving with planar twists.
+
+    velocity (..., 2): the velocity of the patch origin; spin (...): the
+    angular velocity (counter-clockwise positive); broadcast together.
+    Returns PlanarWrench(force (..., 2), torque (...)) per unit mu N, the
+    torque about the patch origin in the vertices' length unit.  A zero twist
+    (v = 0 and omega = 0) or a non-finite component raises ValueError."""
+    return PlanarWrench(*_core._friction_wrench(patch, velocity, spin))
+
+
+def friction_dissipation(patch, velocity, spin):
+    """The dissipation D = integral of p |u| dA per unit mu N of a PolygonPatch
+    at planar twists (as friction_wrench), with its gradient in (v_x, v_y,
+    omega), -(F_x, F_y, tau), and its Hessian (+inf in every entry where it
+    diverges: a line or point patch pivoting about one of its points).
+    Returns PatchDissipation(value (...), gradient (..., 3), hessian (..., 3, 3))."""
+    return PatchDissipation(*_core._friction_dissipation(patch, velocity, spin))

@@ -6,6 +6,8 @@
 // other reals), the result of its shape; float32 stays float32, every other
 // type is computed in float64; a scalar (a Python number, a numpy scalar
 // or a 0-d array) gives a numpy scalar.  The loop runs without the GIL.
+// The contact and patch functions broadcast several inputs, each with its
+// own trailing (vector or matrix) dimensions, in float64 (broadcast_inputs).
 #ifndef SPINSLIDE_PYTHON_ARRAYS_HPP
 #define SPINSLIDE_PYTHON_ARRAYS_HPP
 
@@ -14,7 +16,9 @@
 
 #include <array>
 #include <cstddef>
+#include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace spinslide_python {
@@ -77,6 +81,71 @@ py::object map_reals(py::handle x, const char* what, Body body) {
 template <std::size_t N, class Body>
 py::object map_doubles(py::handle x, const char* what, Body body) {
   return map_typed<double, N>(as_array(x, what), body);
+}
+
+using contiguous = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// The inputs broadcast together, each with `trailing` fixed trailing
+// dimensions (1: a vector of 2, 2: a 3×3 matrix; any other size is a
+// ValueError naming the input), as contiguous float64.
+struct broadcast {
+  std::vector<contiguous> arrays;
+  std::vector<py::ssize_t> shape;  // the contacts' shape (without the trailing dimensions)
+  std::size_t count = 1;
+};
+
+inline broadcast broadcast_inputs(const std::vector<std::pair<py::handle, int>>& inputs,
+                                  const std::vector<const char*>& names) {
+  // Each array's leading (contact) dimensions, broadcast together.
+  py::module_ np = py::module_::import("numpy");
+  std::vector<py::array> arrays;
+  py::list leading;
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    py::array a = as_array(inputs[k].first, names[k]);
+    const int trailing = inputs[k].second;
+    const py::ssize_t size = trailing == 1 ? 2 : 3;
+    bool fits = a.ndim() >= trailing;
+    for (int i = 1; fits && i <= trailing; ++i) fits = a.shape(a.ndim() - i) == size;
+    if (!fits)
+      throw py::value_error(std::string(names[k]) + " must have " + std::to_string(trailing) +
+                            " trailing dimension(s) (a vector is (..., 2), a matrix (..., 3, 3))");
+    arrays.push_back(a);
+    py::list s;
+    for (py::ssize_t i = 0; i < a.ndim() - trailing; ++i) s.append(a.shape(i));
+    leading.append(py::tuple(s));
+  }
+  const py::tuple shape = np.attr("broadcast_shapes")(*leading);
+  broadcast out;
+  for (const auto& d : shape) out.shape.push_back(d.cast<py::ssize_t>());
+  for (const auto n : out.shape) out.count *= static_cast<std::size_t>(n);
+  for (std::size_t k = 0; k < arrays.size(); ++k) {
+    py::list full(shape);
+    for (py::ssize_t i = arrays[k].ndim() - inputs[k].second; i < arrays[k].ndim(); ++i)
+      full.append(arrays[k].shape(i));
+    out.arrays.push_back(contiguous::ensure(
+        np.attr("ascontiguousarray")(np.attr("broadcast_to")(arrays[k], py::tuple(full)))));
+  }
+  return out;
+}
+
+inline std::vector<py::ssize_t> with(std::vector<py::ssize_t> shape,
+                                     std::initializer_list<py::ssize_t> t) {
+  shape.insert(shape.end(), t);
+  return shape;
+}
+
+// A 2-vector (a point, a force) as a numpy array of shape (2,).
+inline py::array_t<double> vector_array(const std::array<double, 2>& x) {
+  py::array_t<double> a(2);
+  a.mutable_at(0) = x[0];
+  a.mutable_at(1) = x[1];
+  return a;
+}
+
+// A result array (or a scalar where the contacts' shape is ()).
+inline py::object finish(py::array a, bool scalar) {
+  if (scalar) return a[py::tuple()];
+  return py::object(std::move(a));
 }
 
 }  // namespace spinslide_python

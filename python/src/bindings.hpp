@@ -15,6 +15,8 @@ void bind_values(pybind11::module_& m);    // values.cpp: the disk's 𝓕, 𝓣,
 void bind_profiles(pybind11::module_& m);  // profiles.cpp: the profile classes, coupling
 void bind_dynamics(pybind11::module_& m);  // dynamics.cpp: terminal motion, throws, batches
 void bind_contact(pybind11::module_& m);   // contact.cpp: the limit-set projection, laws
+void bind_patches(pybind11::module_& m);   // patches.cpp: flat patches, their wrench, dissipation
+void bind_plates(pybind11::module_& m);    // plates.cpp: a flat plate thrown on a plane
 
 }  // namespace spinslide_python
 

@@ -4,13 +4,17 @@
 //
 // The contact: the projection onto the coupled limit set, and the impulse
 // and spring-history laws, for one contact or for arrays of contacts (a
-// numpy simulator calls them once per step for all its contacts).
+// numpy simulator calls them once per step for all its contacts); for a
+// round profile, and for a flat patch (with the inverse map of its limit
+// surface).
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "profile_handle.hpp"
 
 #include <spinslide/contact/impulse_friction.hpp>
 #include <spinslide/contact/limit_set.hpp>
+#include <spinslide/contact/patch_impulse.hpp>
+#include <spinslide/contact/patch_limit_set.hpp>
 #include <spinslide/contact/spring_friction.hpp>
 
 #include <array>
@@ -21,59 +25,6 @@
 namespace spinslide_python {
 
 namespace {
-
-using contiguous = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-// The inputs broadcast together, each with `trailing` fixed trailing
-// dimensions (2 for a vector, 3×3 for a matrix), as contiguous float64.
-struct broadcast {
-  std::vector<contiguous> arrays;
-  std::vector<py::ssize_t> shape;  // the contacts' shape (without the trailing dimensions)
-  std::size_t count = 1;
-};
-
-broadcast broadcast_inputs(const std::vector<std::pair<py::handle, int>>& inputs,
-                           const std::vector<const char*>& names) {
-  // Each array's leading (contact) dimensions, broadcast together.
-  py::module_ np = py::module_::import("numpy");
-  std::vector<py::array> arrays;
-  py::list leading;
-  for (std::size_t k = 0; k < inputs.size(); ++k) {
-    py::array a = as_array(inputs[k].first, names[k]);
-    const int trailing = inputs[k].second;
-    if (a.ndim() < trailing)
-      throw py::value_error(std::string(names[k]) + " must have " + std::to_string(trailing) +
-                            " trailing dimension(s) (a vector is (..., 2), a matrix (..., 3, 3))");
-    arrays.push_back(a);
-    py::list s;
-    for (py::ssize_t i = 0; i < a.ndim() - trailing; ++i) s.append(a.shape(i));
-    leading.append(py::tuple(s));
-  }
-  const py::tuple shape = np.attr("broadcast_shapes")(*leading);
-  broadcast out;
-  for (const auto& d : shape) out.shape.push_back(d.cast<py::ssize_t>());
-  for (const auto n : out.shape) out.count *= static_cast<std::size_t>(n);
-  for (std::size_t k = 0; k < arrays.size(); ++k) {
-    py::list full(shape);
-    for (py::ssize_t i = arrays[k].ndim() - inputs[k].second; i < arrays[k].ndim(); ++i)
-      full.append(arrays[k].shape(i));
-    out.arrays.push_back(contiguous::ensure(
-        np.attr("ascontiguousarray")(np.attr("broadcast_to")(arrays[k], py::tuple(full)))));
-  }
-  return out;
-}
-
-std::vector<py::ssize_t> with(std::vector<py::ssize_t> shape,
-                              std::initializer_list<py::ssize_t> t) {
-  shape.insert(shape.end(), t);
-  return shape;
-}
-
-// A result array (or a scalar where the contacts' shape is ()).
-py::object finish(py::array a, bool scalar) {
-  if (scalar) return a[py::tuple()];
-  return py::object(std::move(a));
-}
 
 // What a projection or a law step returns for each contact: the force (a
 // magnitude, or a 2-vector for the laws), the torque, whether it sticks and
@@ -122,6 +73,122 @@ class friction_outputs {
   bool* s_;
 };
 
+// The 3×3 matrix at element i of a broadcast (..., 3, 3) input, as a metric
+// (its checks: std::domain_error, ValueError in Python).
+spinslide::planar_metric<double> metric_at(const contiguous& m, std::size_t i) {
+  const double* mi = m.data() + 9 * i;
+  return spinslide::planar_metric<double>(
+      {{{mi[0], mi[1], mi[2]}, {mi[3], mi[4], mi[5]}, {mi[6], mi[7], mi[8]}}});
+}
+
+// A patch's result adds its slip, a twist: (..., 2) and (...).
+class patch_outputs : public friction_outputs {
+ public:
+  explicit patch_outputs(const std::vector<py::ssize_t>& shape)
+      : friction_outputs(shape, true),
+        velocity_(with(shape, {2})),
+        spin_(shape),
+        scalar_(shape.empty()),
+        v_(velocity_.mutable_data()),
+        w_(spin_.mutable_data()) {}
+
+  template <class Result>
+  void set(std::size_t i, const Result& r) {
+    friction_outputs::set(i, r);
+    v_[2 * i] = r.slip.velocity[0];
+    v_[2 * i + 1] = r.slip.velocity[1];
+    w_[i] = r.slip.omega;
+  }
+
+  py::dict to_dict() {
+    py::dict out = friction_outputs::to_dict();
+    out["slip_velocity"] = velocity_;
+    out["slip_spin"] = finish(spin_, scalar_);
+    return out;
+  }
+
+ private:
+  py::array_t<double> velocity_, spin_;
+  bool scalar_;
+  double *v_, *w_;
+};
+
+spinslide::planar_twist<double> twist_at(const contiguous& v, const contiguous& w, std::size_t i) {
+  return {{v.data()[2 * i], v.data()[2 * i + 1]}, w.data()[i]};
+}
+
+py::dict project_patch(const spinslide::polygon_patch<double>& patch, py::handle force,
+                       py::handle torque, py::handle metric, py::handle start_velocity,
+                       py::handle start_spin) {
+  const broadcast in =
+      broadcast_inputs({{force, 1}, {torque, 0}, {metric, 2}, {start_velocity, 1}, {start_spin, 0}},
+                       {"force", "torque", "metric", "start_velocity", "start_spin"});
+  patch_outputs out(in.shape);
+  const double *f = in.arrays[0].data(), *t = in.arrays[1].data();
+  {
+    py::gil_scoped_release release;
+    for (std::size_t i = 0; i < in.count; ++i) {
+      const spinslide::planar_wrench<double> point{{f[2 * i], f[2 * i + 1]}, t[i]};
+      out.set(i, spinslide::project_to_limit_set(patch, point, metric_at(in.arrays[2], i),
+                                                 twist_at(in.arrays[3], in.arrays[4], i)));
+    }
+  }
+  return out.to_dict();
+}
+
+py::dict surface_twist(const spinslide::polygon_patch<double>& patch, py::handle force,
+                       py::handle torque) {
+  const broadcast in = broadcast_inputs({{force, 1}, {torque, 0}}, {"force", "torque"});
+  py::array_t<double> velocity(with(in.shape, {2})), spin(in.shape), gauge(in.shape);
+  double *v = velocity.mutable_data(), *w = spin.mutable_data(), *g = gauge.mutable_data();
+  const double *f = in.arrays[0].data(), *t = in.arrays[1].data();
+  {
+    py::gil_scoped_release release;
+    for (std::size_t i = 0; i < in.count; ++i) {
+      const auto r = spinslide::limit_surface_twist(
+          patch, spinslide::planar_wrench<double>{{f[2 * i], f[2 * i + 1]}, t[i]});
+      v[2 * i] = r.twist.velocity[0];
+      v[2 * i + 1] = r.twist.velocity[1];
+      w[i] = r.twist.omega;
+      g[i] = r.gauge;
+    }
+  }
+  const bool scalar = in.shape.empty();
+  py::dict out;
+  out["velocity"] = velocity;
+  out["spin"] = finish(spin, scalar);
+  out["gauge"] = finish(gauge, scalar);
+  return out;
+}
+
+py::dict patch_impulse(const spinslide::polygon_patch<double>& patch, py::handle velocity,
+                       py::handle spin, py::handle inverse_mass, py::handle normal_impulse,
+                       py::handle mu, py::handle start_velocity, py::handle start_spin) {
+  const broadcast in = broadcast_inputs({{velocity, 1},
+                                         {spin, 0},
+                                         {inverse_mass, 2},
+                                         {normal_impulse, 0},
+                                         {mu, 0},
+                                         {start_velocity, 1},
+                                         {start_spin, 0}},
+                                        {"velocity", "spin", "inverse_mass", "normal_impulse",
+                                         "friction_coefficient", "start_velocity", "start_spin"});
+  patch_outputs out(in.shape);
+  const double *v = in.arrays[0].data(), *w = in.arrays[1].data(), *n = in.arrays[3].data(),
+               *u = in.arrays[4].data();
+  {
+    py::gil_scoped_release release;
+    for (std::size_t i = 0; i < in.count; ++i) {
+      const spinslide::patch_impulse_contact<double> c{
+          spinslide::normal_impulse<double>{n[i]}, spinslide::friction_coefficient<double>{u[i]}};
+      out.set(i, spinslide::impulse_friction(patch, std::array<double, 2>{v[2 * i], v[2 * i + 1]},
+                                             w[i], metric_at(in.arrays[2], i), c,
+                                             twist_at(in.arrays[5], in.arrays[6], i)));
+    }
+  }
+  return out.to_dict();
+}
+
 py::dict project(const profile_handle& h, py::handle force, py::handle torque,
                  py::handle torque_weight) {
   const broadcast in = broadcast_inputs({{force, 0}, {torque, 0}, {torque_weight, 0}},
@@ -151,16 +218,13 @@ py::dict impulse(const profile_handle& h, py::handle velocity, py::handle spin,
                                         {"velocity", "spin", "inverse_mass", "radius",
                                          "normal_impulse", "friction_coefficient", "start_ratio"});
   friction_outputs out(in.shape, true);
-  const double *v = in.arrays[0].data(), *w = in.arrays[1].data(), *m = in.arrays[2].data(),
-               *a = in.arrays[3].data(), *n = in.arrays[4].data(), *u = in.arrays[5].data(),
-               *s0 = in.arrays[6].data();
+  const double *v = in.arrays[0].data(), *w = in.arrays[1].data(), *a = in.arrays[3].data(),
+               *n = in.arrays[4].data(), *u = in.arrays[5].data(), *s0 = in.arrays[6].data();
   {
     py::gil_scoped_release release;
     visit(h, [&](const auto& p) {
       for (std::size_t i = 0; i < in.count; ++i) {
-        const double* mi = m + 9 * i;
-        const spinslide::planar_metric<double> metric(
-            {{{mi[0], mi[1], mi[2]}, {mi[3], mi[4], mi[5]}, {mi[6], mi[7], mi[8]}}});
+        const spinslide::planar_metric<double> metric = metric_at(in.arrays[2], i);
         const spinslide::impulse_contact<double> c{spinslide::patch_radius<double>{a[i]},
                                                    spinslide::normal_impulse<double>{n[i]},
                                                    spinslide::friction_coefficient<double>{u[i]}};
@@ -237,6 +301,13 @@ void bind_contact(py::module_& m) {
   m.def("_impulse_friction", &impulse, py::arg("profile"), py::arg("velocity"), py::arg("spin"),
         py::arg("inverse_mass"), py::arg("radius"), py::arg("normal_impulse"),
         py::arg("friction_coefficient"), py::arg("start_ratio"));
+  m.def("_project_patch_to_limit_set", &project_patch, py::arg("patch"), py::arg("force"),
+        py::arg("torque"), py::arg("metric"), py::arg("start_velocity"), py::arg("start_spin"));
+  m.def("_limit_surface_twist", &surface_twist, py::arg("patch"), py::arg("force"),
+        py::arg("torque"));
+  m.def("_patch_impulse_friction", &patch_impulse, py::arg("patch"), py::arg("velocity"),
+        py::arg("spin"), py::arg("inverse_mass"), py::arg("normal_impulse"),
+        py::arg("friction_coefficient"), py::arg("start_velocity"), py::arg("start_spin"));
   m.def("_spring_history_friction", &spring, py::arg("profile"), py::arg("displacement"),
         py::arg("twist"), py::arg("curve_ratio"), py::arg("displacement_increment"),
         py::arg("twist_increment"), py::arg("tangential_stiffness"), py::arg("twisting_stiffness"),

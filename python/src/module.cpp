@@ -26,4 +26,6 @@ PYBIND11_MODULE(_core, m) {
   spinslide_python::bind_profiles(m);
   spinslide_python::bind_dynamics(m);
   spinslide_python::bind_contact(m);
+  spinslide_python::bind_patches(m);
+  spinslide_python::bind_plates(m);
 }

@@ -119,3 +119,12 @@ def test_spring_law_sticks_then_slips_and_keeps_its_state():
     assert np.allclose(r2.force, -kt * np.asarray(r2.displacement), rtol=1e-13)
     assert r2.torque == pytest.approx(-kw * r2.twist, rel=1e-13)
     assert r2.curve_ratio == r2.ratio
+
+
+def test_vectors_and_matrices_of_another_size_are_refused():
+    disk = spinslide.UniformDisk()
+    m = np.eye(3)
+    with pytest.raises(ValueError, match="velocity must have 1 trailing"):
+        spinslide.impulse_friction(disk, [0.01, -0.02, 0.0], 0.03, m, 1.0, 1.0, 0.5)
+    with pytest.raises(ValueError, match="inverse_mass must have 2 trailing"):
+        spinslide.impulse_friction(disk, [0.01, -0.02], 0.03, np.eye(2), 1.0, 1.0, 0.5)
