@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <spinslide/contact/pair_friction.hpp>
+#include <spinslide/values/polygon_patch.hpp>
 #include <spinslide/values/profile.hpp>
 #include <spinslide/values/tabulated.hpp>
 
@@ -190,4 +191,44 @@ TEST(PairFriction, FloatAsDouble) {
   const auto stuck =
       f.impulse({1e-4f, 0.0f}, 0.0f, wf, spinslide::normal_impulse<float>{1.0f}, 0.0f);
   EXPECT_TRUE(stuck.sticking);
+}
+
+// A pair whose patch is the contact's own (own_patch): the patch comes with
+// each call.  It sticks exactly where the stopping impulse is inside μΛ
+// times the patch's limit set; sliding fast it takes the patch's pure
+// translation, F = −μΛ v̂ and L = −μΛ e × v̂ about the origin (e the centre
+// of pressure: docs/patches.md); without a patch it is point friction at
+// the origin, which has no lever for a torque.
+TEST(PairFriction, OwnPatchSticksAndSlidesByThePatchGiven) {
+  pair_friction<double> f(spinslide::own_patch{}, friction_coefficient<double>{0.2});
+  EXPECT_TRUE(f.uses_own_patch());
+  EXPECT_FALSE(disk_friction().uses_own_patch());
+  EXPECT_EQ(f.radius(1e-3), 0.0);
+  const spinslide::polygon_patch<double> square(
+      {{-0.1, -0.1}, {0.1, -0.1}, {0.1, 0.1}, {-0.1, 0.1}},
+      spinslide::centre_of_pressure<double>{{0.0, 0.03}});
+  const spinslide::normal_impulse<double> load{0.1};
+  const spinslide::planar_metric<double> w({{{2, 0, 0}, {0, 2, 0}, {0, 0, 50}}});
+  const auto stick = f.impulse({0.01, 0.0}, 0.01, w, load, 0.0, &square);
+  EXPECT_TRUE(stick.sticking);
+  EXPECT_DOUBLE_EQ(stick.force[0], -0.005);
+  EXPECT_EQ(stick.force[1], 0.0);
+  EXPECT_DOUBLE_EQ(stick.torque, -0.0002);
+  EXPECT_TRUE(std::isnan(stick.ratio));
+  const spinslide::planar_metric<double> heavy({{{1e-9, 0, 0}, {0, 1e-9, 0}, {0, 0, 1e-9}}});
+  const auto slide = f.impulse({100.0, 0.0}, 0.0, heavy, load, 0.0, &square);
+  EXPECT_FALSE(slide.sticking);
+  EXPECT_NEAR(slide.force[0], -0.02, 1e-12);
+  EXPECT_NEAR(slide.force[1], 0.0, 1e-12);
+  EXPECT_NEAR(slide.torque, 0.02 * 0.03, 1e-12);
+  EXPECT_GT(slide.ratio, 1e6);
+  const auto point = f.impulse({0.0, 0.0}, 1.0, w, load, 0.0, nullptr);
+  EXPECT_FALSE(point.sticking);
+  EXPECT_EQ(point.torque, 0.0);
+  EXPECT_LE(std::hypot(point.force[0], point.force[1]), 0.02);
+  f.forget();
+  const auto again = f.impulse({0.01, 0.0}, 0.01, w, load, 0.0, &square);
+  EXPECT_EQ(again.torque, stick.torque);
+  EXPECT_THROW(pair_friction<double>(spinslide::own_patch{}, friction_coefficient<double>{-1}),
+               std::domain_error);
 }

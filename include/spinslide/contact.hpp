@@ -16,6 +16,7 @@
 #include <spinslide/base/friction_result.hpp>
 #include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/contact_law.hpp>
+#include <spinslide/contact/contact_patch.hpp>
 #include <spinslide/contact/impulse_friction.hpp>
 #include <spinslide/contact/joint_pairs.hpp>
 #include <spinslide/contact/limit_set.hpp>

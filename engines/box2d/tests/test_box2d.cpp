@@ -57,6 +57,10 @@ TEST(Box2dAdapter, RefusesMisuse) {
   b2BodyDef fixed;
   b2Body* ground = w.world.CreateBody(&fixed);  // static: no mass
   EXPECT_THROW(table.couple(ground, puck_friction()), std::invalid_argument);
+  EXPECT_THROW(table.couple(w.puck, spinslide::pair_friction<double>(
+                                        spinslide::own_patch{},
+                                        spinslide::friction_coefficient<double>{0.2})),
+               std::invalid_argument);
   table.couple(w.puck, puck_friction());
   EXPECT_THROW(table.apply(0.0), std::domain_error);
   EXPECT_THROW(table.apply(-dt), std::domain_error);

@@ -5,8 +5,8 @@
 // The humanoid of engines/mujoco/examples/mujoco_humanoid with every body/floor pair coupled
 // (issue 27): it stands still on a slope below its friction angle, a grazing
 // start raises no error, its energy rises no more than with MuJoCo's own
-// friction after a push and in a fall, and its soles resist pivoting with
-// the coupled spin friction, within μN a⟨r⟩.
+// friction after a push and in a fall, and its soles (each its contact's
+// own patch) resist pivoting with the coupled spin friction, within μNℓ.
 
 #include <gtest/gtest.h>
 
@@ -113,7 +113,9 @@ TEST(MujocoHumanoid, EnergyRisesNoMoreThanWithMuJoCosFriction) {
 }
 
 // 30 N m about the vertical on the torso: the soles resist with their spin
-// friction (MuJoCo's condim 3 has none), within μN a⟨r⟩ of each sole, and
+// friction (MuJoCo's condim 3 has none), within μNℓ of each sole (ℓ its
+// patch's largest distance from the patch origin: no friction on the patch
+// has a longer lever), and
 // once the twist has wound into the joints the body holds (its turn changes
 // by less than 1e-3 rad in the last second).
 TEST(MujocoHumanoid, SolesResistPivotingWithTheirSpinFriction) {
@@ -128,7 +130,7 @@ TEST(MujocoHumanoid, SolesResistPivotingWithTheirSpinFriction) {
     s.step();
     for (const int p : foot_pairs(s)) {
       const auto& r = s.coupled_friction->report(static_cast<std::size_t>(p));
-      const double bound = humanoid::friction * r.normal_force() * humanoid::foot_patch * 2.0 / 3.0;
+      const double bound = humanoid::friction * r.normal_force() * r.patch_radius;
       EXPECT_LE(std::fabs(r.friction_torque()), bound * (1 + 1e-9) + 1e-9);
       most = std::max(most, std::fabs(r.friction_torque()));
     }

@@ -115,6 +115,9 @@ struct joint_pair {
   bool sticking = false;
   /// Out: ε after the step (NaN when sticking).
   double ratio = std::numeric_limits<double>::quiet_NaN();
+  /// The pair's own patch this step (an own_patch pair; contact_patch.hpp),
+  /// or null.  Not owned: it must outlive the solve.
+  const polygon_patch<double>* patch = nullptr;
 };
 
 /// How far the sweeps went.
@@ -223,7 +226,8 @@ class joint_solver {
     const auto mine = detail::multiply(w.at(i, i), p.impulse);
     const detail::vector3<double> s{slip_[i][0] - mine[0], slip_[i][1] - mine[1],
                                     slip_[i][2] - mine[2]};
-    const auto r = p.friction.get().impulse({s[0], s[1]}, s[2], own_[i], p.normal, p.penetration);
+    const auto r =
+        p.friction.get().impulse({s[0], s[1]}, s[2], own_[i], p.normal, p.penetration, p.patch);
     const detail::vector3<double> step{r.force[0] - p.impulse[0], r.force[1] - p.impulse[1],
                                        r.torque - p.impulse[2]};
     for (std::size_t j = 0; j < pairs.size(); ++j) {
@@ -261,8 +265,8 @@ class joint_solver {
       joint_pair& p = pairs[i];
       const auto s = detail::multiply(own_[i].entries(), mixed_[i]);
       if (!std::isfinite(s[0] + s[1] + s[2])) return refuse();  // the law would refuse it
-      const auto r =
-          p.friction.get().impulse({-s[0], -s[1]}, -s[2], own_[i], p.normal, p.penetration);
+      const auto r = p.friction.get().impulse({-s[0], -s[1]}, -s[2], own_[i], p.normal,
+                                              p.penetration, p.patch);
       mixed_[i] = {r.force[0], r.force[1], r.torque};
     }
     trial_slip_.resize(pairs.size());

@@ -30,8 +30,10 @@
 
 namespace humanoid {
 
-constexpr double friction = 0.8;      // μ, every pair
-constexpr double foot_patch = 0.065;  // the feet's patch radius [m] (a 0.22 × 0.1 m sole)
+constexpr double friction = 0.8;  // μ, every pair
+// The radius [m] of a disk of a sole's area (0.22 × 0.1 m): MuJoCo's
+// torsional friction below is that disk's.  spinslide's soles are the boxes.
+constexpr double foot_patch = 0.065;
 constexpr double time_step = 2e-3;
 
 // How the humanoid's contacts with the floor get their friction.
@@ -126,14 +128,14 @@ inline std::vector<int> body_geoms(const mjModel* m) {
 }
 
 // A pair's friction for one of the humanoid's geoms: the feet are flat
-// soles (a uniform disk of the patch radius), the capsules and spheres
-// curved (Hertz's patch from MuJoCo's penetration, from 0: a grazing touch is
-// point friction).
+// soles, each its contact's own patch (the hull of MuJoCo's contact points
+// under their normal forces: the sole's face, or its edge or corner as the
+// foot rolls), the capsules and spheres curved (Hertz's patch from MuJoCo's
+// penetration, from 0: a grazing touch is point friction).
 inline spinslide::pair_friction<double> friction_of(const mjModel* m, int geom) {
   const spinslide::friction_coefficient<double> mu{friction};
   if (m->geom_type[geom] == mjGEOM_BOX)
-    return spinslide::pair_friction(spinslide::uniform_disk<>(),
-                                    spinslide::patch_radius<double>{foot_patch}, mu);
+    return spinslide::pair_friction<double>(spinslide::own_patch{}, mu);
   return spinslide::pair_friction(
       spinslide::hertz<>(),
       spinslide::hertz_radius{m->geom_size[3 * static_cast<std::size_t>(geom)]}, mu);

@@ -56,11 +56,17 @@ class table_friction {
 
   /// Couples `body` (a dynamic body with mass; it must outlive its use here)
   /// with `friction` (its patch: pair_friction.hpp); returns its index for
-  /// report().  A null or massless body is std::invalid_argument.
+  /// report().  A null or massless body is std::invalid_argument, and so is
+  /// an own_patch friction: a top-down table has no contact points to build
+  /// a patch from (give the patch's profile and radius).
   std::size_t couple(b2Body* body, const spinslide::pair_friction<double>& friction) {
     static const char* function = "spinslide::box2d::table_friction::couple";
     detail::required(function, "the body", body);
     if (!(body->GetMass() > 0)) detail::refuse(function, "a dynamic body with mass is needed");
+    if (friction.uses_own_patch())
+      detail::refuse(function,
+                     "an own_patch friction, but a top-down table has no contact points to build "
+                     "the patch from; give a round profile and its radius");
     bodies_.push_back({body, friction, pair_report{}});
     return bodies_.size() - 1;
   }

@@ -20,6 +20,14 @@
 /// moves the bodies with their velocities: the friction of a step sees that
 /// step's normal impulse (no lag) and acts on that step's motion.
 ///
+/// A pair coupled with pair_friction(spinslide::own_patch{}, μ) takes the
+/// contact's own patch instead of a round one: in every step the convex hull
+/// of its manifold's points (those Bullet pressed, or that touch), under
+/// the linear (no-tension) pressure of their normal impulses, about the
+/// patch centre (contact_patch.hpp).  Bullet adds a manifold's up to 4
+/// points over several frames, so a landing box is a point, then a line,
+/// then its face.
+///
 /// Not included by spinslide.hpp: it needs Bullet (btBulletDynamicsCommon.h)
 /// and the target spinslide::bullet.
 
@@ -29,6 +37,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/contact/contact_patch.hpp>
 #include <spinslide/contact/detail/vector3.hpp>
 #include <spinslide/contact/joint_pairs.hpp>
 #include <spinslide/contact/pair_friction.hpp>
@@ -203,6 +212,8 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
     patch_sum sum;
     btVector3 t[3];
     btVector3 ra, rb;
+    // An own_patch pair's patch, in (t1, t2) about the centre.
+    polygon_patch<double> own = polygon_patch<double>::point({0, 0});
   };
 
   // A patch's rows (slip along t1, t2, spin about n of A against B) on one
@@ -326,7 +337,26 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
     p.sum.centre = patch_centre(p.sum, m, p.t[2], flat);
     p.ra = lever(offset(p.a, p.sum.centre), p.t[2], flat);
     p.rb = lever(offset(p.b, p.sum.centre), p.t[2], flat);
+    if (pair.friction.uses_own_patch()) p.own = own_patch_of(m, p);
     patches_.push_back(p);
+  }
+
+  // The manifold's own patch: its points that Bullet pressed or that touch,
+  // in the tangent axes about the patch centre, loaded by their normal
+  // impulses.  contact_patch never throws.
+  polygon_patch<double> own_patch_of(const btPersistentManifold& m, const patch& p) {
+    plane_points_.clear();
+    for (int j = 0; j < m.getNumContacts(); ++j) {
+      const btManifoldPoint& cp = m.getContactPoint(j);
+      const double lambda = static_cast<double>(cp.m_appliedImpulse);
+      if (!(cp.getDistance() <= m.getContactProcessingThreshold())) continue;
+      if (!(lambda > 0) && cp.getDistance() > 0) continue;
+      const btVector3 d =
+          (cp.getPositionWorldOnA() + cp.getPositionWorldOnB()) * btScalar(0.5) - p.sum.centre;
+      plane_points_.push_back(
+          {{static_cast<double>(d.dot(p.t[0])), static_cast<double>(d.dot(p.t[1]))}, lambda});
+    }
+    return contact_patch(plane_points_);
   }
 
   // The patches' friction impulses, solved together (joint_pairs.hpp: the
@@ -342,6 +372,7 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
       for (std::size_t j = 0; j < n; ++j) coupling_.at(i, j) = block(p, patches_[j]);
       joint_.push_back(joint_pair{std::ref(p.pair->friction), free_motion(p),
                                   normal_impulse<double>{p.sum.impulse}, p.sum.depth});
+      if (p.pair->friction.uses_own_patch()) joint_.back().patch = &p.own;
     }
     solver_.solve(joint_, coupling_);
     for (std::size_t i = 0; i < n; ++i) {
@@ -395,7 +426,8 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
     r.step = step;
     r.normal_impulse = p.sum.impulse;
     r.penetration = p.sum.depth;
-    r.patch_radius = p.pair->friction.radius(p.sum.depth);
+    r.patch_radius =
+        p.pair->friction.uses_own_patch() ? p.own.radius() : p.pair->friction.radius(p.sum.depth);
     r.centre = vector(p.sum.centre);
     r.normal = vector(-p.t[2]);
     r.sticking = f.sticking;
@@ -412,6 +444,7 @@ class coupled_friction_solver : public btSequentialImpulseConstraintSolver {
   std::unordered_map<pair_key, pair_state, key_hash> pairs_;
   // The step's workspace, kept from one step to the next.
   std::vector<patch> patches_;
+  std::vector<contact_point<double>> plane_points_;
   std::vector<joint_pair> joint_;
   pair_coupling coupling_{0};
   joint_solver solver_;

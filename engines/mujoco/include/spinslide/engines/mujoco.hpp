@@ -12,6 +12,12 @@
 ///                                              spinslide::friction_coefficient<double>{0.2}));
 ///     for (...) friction.step(data);  // instead of mj_step(model, data)
 ///
+/// A pair coupled with pair_friction(spinslide::own_patch{}, μ) takes the
+/// contact's own patch instead of a round one: in every step the convex
+/// hull of MuJoCo's contact points of the pair, under the linear
+/// (no-tension) pressure of their normal forces (contact_patch.hpp; a box
+/// on its face, its edge or its corner makes an area, a line or a point).
+///
 /// The coupled geoms' contacts must be frictionless (condim="1"): MuJoCo
 /// solves their normal forces, and spinslide their friction.  Each step is
 /// mj_step1; the forward dynamics up to the constraint forces, which gives
@@ -38,6 +44,7 @@
 
 #include <mujoco/mujoco.h>
 #include <spinslide/base/detail/checks.hpp>
+#include <spinslide/contact/contact_patch.hpp>
 #include <spinslide/contact/detail/vector3.hpp>
 #include <spinslide/contact/joint_pairs.hpp>
 #include <spinslide/contact/pair_friction.hpp>
@@ -188,6 +195,11 @@ class coupled_friction {
     std::vector<double> rows;    // 3×nv: t1, t2 and spin rows of the relative motion
     vec3 free_motion{};          // the relative motion at the step's end without friction
     vec3 impulse{};              // (P_x, P_y, L) on geom a's body
+    // An own_patch pair's points this step (world position, normal force)
+    // and the patch they make, about the centre in the axes.
+    std::vector<std::array<double, 4>> points;
+    std::vector<contact_point<double>> plane_points;
+    polygon_patch<double> patch = polygon_patch<double>::point({0, 0});
   };
   static constexpr int max_corrections = 3;
 
@@ -216,6 +228,7 @@ class coupled_friction {
     pair_report& r = pair.report;
     r = pair_report{};
     r.step = model_->opt.timestep;
+    pair.points.clear();
     double force = 0;
     for (int i = 0; i < data->ncon; ++i) {
       const mjContact& c = data->contact[i];
@@ -231,6 +244,8 @@ class coupled_friction {
       mj_contactForce(model_, data, i, f.data());
       const double sign = forward ? 1.0 : -1.0;
       ++r.contacts;
+      if (pair.friction.uses_own_patch())
+        pair.points.push_back({c.pos[0], c.pos[1], c.pos[2], f[0]});
       force += f[0];
       for (std::size_t k = 0; k < 3; ++k) {
         r.centre[k] += f[0] * c.pos[k];
@@ -280,7 +295,25 @@ class coupled_friction {
     relative_rows(pair, pair.axes, data);
     pair.free_motion = end_of_step_motion(pair, data);
     r.patch_radius = pair.friction.radius(r.penetration);
+    if (pair.friction.uses_own_patch()) {
+      build_patch(pair);
+      r.patch_radius = pair.patch.radius();
+    }
     return true;
+  }
+
+  // An own_patch pair's patch from its points, in its tangent axes about
+  // the centre (the force-weighted mean: the centre of pressure is the
+  // origin).  contact_patch never throws.
+  static void build_patch(coupled_pair& pair) {
+    pair.plane_points.clear();
+    const auto& centre = pair.report.centre;
+    for (const auto& q : pair.points) {
+      const vec3 d{q[0] - centre[0], q[1] - centre[1], q[2] - centre[2]};
+      pair.plane_points.push_back(
+          {{detail::dot(d, pair.axes[0]), detail::dot(d, pair.axes[1])}, q[3]});
+    }
+    pair.patch = contact_patch(pair.plane_points);
   }
 
   // The active pairs' joint inverse mass W = J H⁻¹ Jᵀ (3×3 blocks), H the
@@ -319,6 +352,7 @@ class coupled_friction {
       joint_.push_back(joint_pair{std::ref(pair.friction), pair.free_motion,
                                   normal_impulse<double>{pair.report.normal_impulse},
                                   pair.report.penetration, pair.impulse});
+      if (pair.friction.uses_own_patch()) joint_.back().patch = &pair.patch;
     }
     // Gauss–Seidel sweeps with Anderson mixing (joint_pairs.hpp; issue 41).
     // A plate that stops on several feet may rest with one foot's impulse
