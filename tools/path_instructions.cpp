@@ -25,6 +25,8 @@
 //                  (0.015, −0.005) (double; the unit is the disk's force_torque).
 //   patch_no_tension the polygon_patch of that rectangle with its centre of
 //                  pressure beyond the kern, at 64 points of [0.06, 0.1] × [0.015, 0.04].
+//   patch_impulse  the impulse law of that rectangle (uniform) under a box
+//                  (patch_impulse below); its unit is the uniform patch_wrench.
 // The modes:
 //   warm      from the stored state (the curve() a contact keeps) of the
 //             previous answer, which was the answer for ε·(1 + 1e-3) (the
@@ -250,6 +252,48 @@ void all_paths() {
                       true);
 }
 
+// A flat patch's impulse law (issue 42, item 9: warm ≤ 8× the rectangle's
+// wrench): a 2 kg box, yaw inertia 0.01 kg m², its centre 2 cm off the
+// patch origin, at 64 steps of sliding up to 0.3 m/s and spin up to 5 rad/s
+// under μΛ = 3e-3 (3 when sticking); warm from the answer's slip moved 1e-3,
+// spread 1–100 % (its spin), cold without a start.
+void patch_impulse(const polygon_patch<double>& patch, mode m) {
+  const double mass = 2, inertia = 0.01;
+  const std::array<double, 3> arm{-0.01, 0.02, 1};
+  planar_metric<double>::matrix w{};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) w[i][j] = arm[i] * arm[j] / inertia;
+  w[0][0] += 1 / mass;
+  w[1][1] += 1 / mass;
+  const planar_metric<double> metric(w);
+  const patch_impulse_contact<double> c{normal_impulse<double>{m == mode::sticking ? 10.0 : 0.01},
+                                        friction_coefficient<double>{0.3}};
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto f = factors(m);
+  struct step {
+    std::array<double, 2> v;
+    double omega;
+    planar_twist<double> start;
+  };
+  std::vector<step> steps(64);
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    step& s = steps[i];
+    s.v = {0.3 * u(rng), 0.3 * u(rng)};
+    s.omega = 5 * u(rng);
+    s.start = {{0, 0}, 0};
+    if (m == mode::cold || m == mode::sticking) continue;
+    const auto a = impulse_friction(patch, s.v, s.omega, metric, c).slip;
+    const double off = m == mode::warm ? 1e-3 : f[i] - 1;
+    s.start = {{a.velocity[0] * (1 + off), a.velocity[1] * (1 - off)}, a.omega * (1 + off)};
+  }
+  count(std::string("patch_impulse.rectangle.double.") + mode_names[static_cast<int>(m)],
+        [&](int i) {
+          const step& s = steps[static_cast<std::size_t>(i)];
+          return impulse_friction(patch, s.v, s.omega, metric, c, s.start).torque;
+        });
+}
+
 // The flat patch's paths (issue 42), in double, against the disk's force_torque.
 void patch_paths() {
   using point = std::array<double, 2>;
@@ -279,6 +323,7 @@ void patch_paths() {
     return polygon_patch<double>(sole, centre_of_pressure<double>{centres[at(i)]})
         .pressure_at_origin();
   });
+  for (mode m : all_modes) patch_impulse(uniform, m);
 }
 
 }  // namespace

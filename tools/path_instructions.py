@@ -71,8 +71,12 @@ def run(driver):
 
 
 def unit_of(case):
-    """The force_torque case that is the unit of `case`."""
+    """The case that is the unit of `case`: the same profile's force_torque,
+    and for a flat patch's impulse law (issue 42: ≤ 8× its wrench) the
+    rectangle's uniform wrench."""
     path, profile, real = case.split(".")[:3]
+    if path == "patch_impulse":
+        return "patch_wrench.disk.double.uniform"
     return f"force_torque.{profile}.{real}" if path != "force_torque" else None
 
 
@@ -89,16 +93,16 @@ def read_budgets(path):
     return budgets
 
 
-MODES = ("warm", "spread", "cold", "sticking")
+MODES = ("warm", "spread", "cold", "sticking", "uniform", "linear", "construction")
 
 
 def markdown(counts):
     """One row per path, profile and type; per mode, instructions (× force_torque)."""
-    print("| path | profile | type | force_torque | " + " | ".join(MODES) + " |")
+    print("| path | profile | type | unit | " + " | ".join(MODES) + " |")
     print("| --- | --- | --- | ---: | " + " | ".join("---:" for _ in MODES) + " |")
     rows = sorted({tuple(c.split(".")[:3]) for c in counts if not c.startswith("force_torque.")})
     for path, profile, real in rows:
-        unit = counts[f"force_torque.{profile}.{real}"]
+        unit = counts[unit_of(next(c for c in counts if c.startswith(f"{path}.{profile}.{real}.")))]
         cells = []
         for m in MODES:
             n = counts.get(f"{path}.{profile}.{real}.{m}")
