@@ -215,6 +215,7 @@ TEST(PatchProjection, ManyGonAgreesWithTheRoundDisksProjection) {
 // A point patch's set is the disk {(f, x × f/ℓ) : |f| ≤ 1}: against a
 // brute-force search over a fine polar grid of f.
 TEST(PatchProjection, PointPatchAgreesWithABruteForceSearch) {
+  int inside = 0, rim = 0;
   const point x{0.3, -0.4};
   const auto patch = polygon_patch<double>::point(x);
   const double l = patch.radius();
@@ -227,6 +228,19 @@ TEST(PatchProjection, PointPatchAgreesWithABruteForceSearch) {
                                                    planar_metric<double>(m));
     const std::array<double, 3> p{r.force[0], r.force[1], r.torque};
     EXPECT_LE(std::hypot(p[0], p[1]), 1 + 1e-14);
+    // On the rim the slip moves x along −f (its friction is f); inside, x
+    // holds and the slip turns the body about it.
+    const double ux = r.slip.velocity[0] - r.slip.omega * x[1],
+                 uy = r.slip.velocity[1] + r.slip.omega * x[0];
+    if (std::hypot(p[0], p[1]) < 1 - 1e-9) {
+      EXPECT_NEAR(std::hypot(ux, uy), 0.0, 1e-12 * (std::fabs(r.slip.omega) + 1e-300));
+      ++inside;
+    } else if (!r.sticking) {
+      const auto w = spinslide::friction_wrench(patch, r.slip);
+      EXPECT_NEAR(w.force[0], p[0], 1e-12);
+      EXPECT_NEAR(w.force[1], p[1], 1e-12);
+      ++rim;
+    }
     EXPECT_NEAR(p[2], (x[0] * p[1] - x[1] * p[0]) / l, 1e-15);
     const double best = distance2(m, p, z);
     for (int i = 0; i <= 400; ++i)
@@ -238,6 +252,8 @@ TEST(PatchProjection, PointPatchAgreesWithABruteForceSearch) {
         EXPECT_GE(distance2(m, q, z), best * (1 - 1e-12)) << i << " " << j;
       }
   }
+  EXPECT_GT(inside, 3);
+  EXPECT_GT(rim, 3);
 }
 
 TEST(PatchProjection, InverseMapRecoversTheTwist) {

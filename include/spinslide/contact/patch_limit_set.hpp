@@ -86,10 +86,12 @@ patch_projection<Real> project_patch(const polygon_patch<Real>& patch, const vec
 /// force and torque of the nearest point p (same units) and the slip, the
 /// twist whose friction wrench is p (friction_wrench(patch, slip) is
 /// (p.force, ℓ·p.torque)), with M(point − p) along the set's outward normal
-/// there (maximum dissipation), and `ratio` the slip's |v|/(ℓ|ω|).  A point patch's set is the flat
-/// disk
-/// {(f, x × f/ℓ) : |f| ≤ 1}; a point off its plane slips, as a pure
-/// rotation about the point where the disk's part sticks.  `start`: the
+/// there (maximum dissipation), and `ratio` the slip's |v|/(ℓ|ω|).  A
+/// point patch's set is the flat disk {(f, x × f/ℓ) : |f| ≤ 1}: a point off
+/// its plane slips, and where its nearest point lies inside the disk (|f| <
+/// 1) the slip is a pure rotation about x, which does not move x: then the
+/// force is not that slip's friction wrench (which is 0), but the disk's
+/// point, held by the stuck contact point.  `start`: the
 /// contact's last slip (the last result's `slip`; zero: none), which only
 /// speeds the search.  Every component finite, else a domain error through
 /// `pol` (NaN components unless it throws).  Nothing else fails: no

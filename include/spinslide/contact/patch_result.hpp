@@ -23,7 +23,8 @@ namespace spinslide {
 /// the slip's |v|/(ℓ|ω|) about the patch origin, NaN when sticking; no curve
 /// point, which a patch has not) with the slip, a planar_twist whose
 /// friction wrench (friction_wrench) points along the answer: zero when
-/// sticking.  The slip is where the contact's next solve starts.
+/// sticking (and, for a point patch whose point holds while the body turns
+/// about it, that turn: project_to_limit_set).  The slip is where the contact's next solve starts.
 template <class Force, class Real, class Quantity = force_quantity>
 struct patch_friction_result : friction_result<Force, Real, Quantity> {
   /// The slip: the twist along which the patch slides and spins.
