@@ -12,7 +12,17 @@
 
 namespace {
 std::atomic<long> allocations{0};
+
+// The allocations of one call of f() after a first call (which may
+// initialise something lazily): the no-allocation tests' measure.
+template <class F>
+long allocations_of(F&& f, double& result) {
+  f();
+  const long before = allocations.load();
+  result = static_cast<double>(f());
+  return allocations.load() - before;
 }
+}  // namespace
 
 // GCC cannot see that these replace the global pair, and warns that free()
 // releases memory from operator new; here that is exactly the intent.

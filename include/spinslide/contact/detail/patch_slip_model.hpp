@@ -80,17 +80,7 @@ class patch_slip_model {
   // The point at s, with the Hessian; false where s is 0, not finite, or
   // the Hessian is not finite (a line patch pivoting about one of its own
   // points, a point patch): the caller then steps without it.
-  bool at(const vec& s, point& x) const {
-    using std::sqrt;
-    static const Real low = boost::math::tools::min_value<Real>(),
-                      high = boost::math::tools::max_value<Real>();
-    const Real s2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
-    if (!(s2 >= low && s2 <= high)) return false;
-    x.s = s;
-    x.size = sqrt(s2);
-    values(s, x.value, x.grad);
-    return curve(x);
-  }
+  bool at(const vec& s, point& x) const { return moved(s, x) && curve(x); }
 
   // The Hessian at x.s (x.size set); false where it is not finite.
   bool curve(point& x) const {
@@ -100,7 +90,8 @@ class patch_slip_model {
     return finite(x.hessian);
   }
 
-  // x moved to s ≠ 0 (finite), its Hessian kept; false where s is out of range.
+  // x moved to s, its Hessian kept; false where s is 0 or not finite (its
+  // square out of the normal numbers' range).
   bool moved(const vec& s, point& x) const {
     static const Real low = boost::math::tools::min_value<Real>(),
                       high = boost::math::tools::max_value<Real>();

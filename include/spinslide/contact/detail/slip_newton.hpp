@@ -31,6 +31,21 @@
 namespace spinslide {
 namespace detail {
 
+// x moved to s: evaluated there, with its Hessian, or, for a model whose
+// Hessian costs several evaluations (a flat patch's), keeping the Hessian
+// across a step within its reuse limit (r² ≤ hessian_reuse_limit()): the
+// next step then errs by about that step's size times its own, and the
+// answer's point ∇D + ∇²Dδ by as little (below rounding at the limit).
+template <class Dissipation>
+bool advance(const Dissipation& d, const vector3<typename Dissipation::value_type>& s,
+             typename Dissipation::value_type r2, typename Dissipation::point& x) {
+  if constexpr (Dissipation::reuses_hessian) {
+    if (r2 <= Dissipation::hessian_reuse_limit()) return d.moved(s, x);
+  }
+  static_cast<void>(r2);
+  return d.at(s, x);
+}
+
 // Newton's steps from x (`evaluated`: whether x's values are the profile's
 // own, not a stored start's; `ms` = M⁻¹s at x) on Ψ for z and M⁻¹ =
 // `inverse`; true when converged, with x the last point and `step` the
@@ -56,19 +71,7 @@ bool slip_newton(const Dissipation& d, const vector3<typename Dissipation::value
     const Real r2 = Dissipation::step_ratio(x, step);
     if (r2 <= limit && evaluated) return true;
     const Real t = r2 > Real(0.25) ? Real(1 / (2 * sqrt(r2))) : Real(1);
-    // A model whose Hessian costs several evaluations (a flat patch's) may
-    // keep it across a step within its reuse limit: the next step then errs
-    // by about that step's size times its own, and the answer's point
-    // ∇D + ∇²Dδ by as little (below rounding at the limit).
-    if constexpr (Dissipation::reuses_hessian) {
-      if (r2 <= Dissipation::hessian_reuse_limit()) {
-        if (!d.moved(shifted(x.s, step, t), x)) return false;
-        ms = multiply(inverse, x.s);
-        evaluated = true;
-        continue;
-      }
-    }
-    if (!d.at(shifted(x.s, step, t), x)) return false;
+    if (!advance(d, shifted(x.s, step, t), r2, x)) return false;
     ms = multiply(inverse, x.s);
     evaluated = true;
   }

@@ -314,6 +314,24 @@ void for_each_far_edge(const vertex_list<Real, N>& poly, const point2<Real>& z0,
   }
 }
 
+/// Feeds `node` each edge's Gauss nodes as one batch (their roots taken,
+/// far_batch::roots), the rule per edge sized for `target`
+/// (far_rule_target): the far field's sums and its Hessian's alike.
+template <class Real, std::size_t N, class Node>
+void for_each_far_batch(const vertex_list<Real, N>& poly, const point2<Real>& z0, Real rho0,
+                        const cplx<Real>& W, double target, Node& node) {
+  far_batch<Real> batch;
+  for_each_far_edge(poly, z0, rho0, [&](const cplx<Real>& mid, const cplx<Real>& d) {
+    batch.size = 0;
+    auto at = [&](const Real& x, const Real& w) {
+      batch.push({mid.re + x * d.re, mid.im + x * d.im}, {w * d.re, w * d.im});
+    };
+    with_far_rule<Real>(far_rule(W, mid, d, target), at);
+    batch.roots(W);
+    node(batch);
+  });
+}
+
 /// S, T (and S_D if asked) of the polygon `poly` whose scaled vertices are
 /// (x − z0)/rho0: Green's theorem with F = v[(a + b̄z/2)A₀ + (b/2)A₁] for S,
 /// v[(a + b̄z/2)A₁ + (b/2)A₂] for T, v[(a + b̄z/2)B₀ + (b/2)B₁] for S_D (above).
@@ -323,17 +341,7 @@ far_sums<Real> polygon_far_integrals(const vertex_list<Real, N>& poly, const poi
                                      bool with_dissipation = false) {
   const cplx<Real> half_b{f.b.re / 2, f.b.im / 2};
   far_node<Real> node{f, half_b, conj(half_b), f.b.re == 0 && f.b.im == 0, with_dissipation};
-  const double target = far_rule_target(f.W);
-  far_batch<Real> batch;
-  for_each_far_edge(poly, z0, rho0, [&](const cplx<Real>& mid, const cplx<Real>& d) {
-    batch.size = 0;
-    auto at = [&](const Real& x, const Real& w) {
-      batch.push({mid.re + x * d.re, mid.im + x * d.im}, {w * d.re, w * d.im});
-    };
-    with_far_rule<Real>(far_rule(f.W, mid, d, target), at);
-    batch.roots(f.W);
-    node(batch);
-  });
+  for_each_far_batch(poly, z0, rho0, f.W, far_rule_target(f.W), node);
   // ∬ f dA = (1/2i) ∮ F dz = (Im X, −Re X) for X = ∮ F/2 dz.
   return {{node.S.im, -node.S.re}, {node.T.im, -node.T.re}, {node.SD.im, -node.SD.re}};
 }

@@ -93,16 +93,7 @@ std::array<std::array<Real, 3>, 3> polygon_far_hessian(const vertex_list<Real, N
   const double target =
       far_rule_target(f.W) -
       std::log(static_cast<double>(f.W.re * f.W.re + f.W.im * f.W.im)) / 2;  // × R
-  far_batch<Real> batch;
-  for_each_far_edge(poly, z0, rho0, [&](const cplx<Real>& mid, const cplx<Real>& d) {
-    batch.size = 0;
-    auto at = [&](const Real& x, const Real& w) {
-      batch.push({mid.re + x * d.re, mid.im + x * d.im}, {w * d.re, w * d.im});
-    };
-    with_far_rule<Real>(far_rule(f.W, mid, d, target), at);
-    batch.roots(f.W);
-    node(batch);
-  });
+  for_each_far_batch(poly, z0, rho0, f.W, target, node);
   std::array<cplx<Real>, 6> I{};  // ∬ = (1/2i)∮: X/(2i) = (Im X, −Re X)/2
   for (std::size_t k = 0; k < 6; ++k) I[k] = {node.sum[k].im / 2, -node.sum[k].re / 2};
   const cplx<Real> q2 = qhat * qhat;
