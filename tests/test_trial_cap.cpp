@@ -26,6 +26,7 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -228,6 +229,52 @@ TEST(TrialCap, BadArgumentsAreDomainErrors) {
                                curve_point<double>{-1, 0, 0, 0, 0}),
                std::domain_error);
   EXPECT_NO_THROW(cap_trial_state(profile, good, springs(1e3, 0.05), contact(0.05, 1, 0.5)));
+}
+
+// The one test of good arguments reads the trial's magnitudes, not each
+// component: an infinite or NaN component of any input still fails it, the
+// error names that input, and a trial that overflows from finite inputs is
+// reported as such (not taken for a bad argument, nor capped).
+std::string domain_error_of(const spring_trial<vec2, double>& t, const spring_stiffness<double>& k,
+                            const force_contact<double>& c) {
+  try {
+    cap_trial_state(hertz<>(), t, k, c);
+  } catch (const std::domain_error& e) {
+    return e.what();
+  }
+  return "";
+}
+TEST(TrialCap, AnErrorNamesItsInputAndAnOverflowedTrialIsReported) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const auto k = springs(1e3, 0.05);
+  const auto c = contact(0.05, 1, 0.5);
+  using t = spring_trial<vec2, double>;
+  EXPECT_NE(domain_error_of(t{{0, inf}, 0, {0, 0}, 0}, k, c).find("trial.displacement"),
+            std::string::npos);
+  // +∞ spring and +∞ damping: −k_t·∞ + ∞ is NaN, still caught.
+  EXPECT_NE(domain_error_of(t{{inf, 0}, 0, {inf, 0}, 0}, k, c).find("trial.displacement"),
+            std::string::npos);
+  EXPECT_NE(domain_error_of(t{{0, 0}, 0, {0, -inf}, 0}, k, c).find("trial.damping_force"),
+            std::string::npos);
+  EXPECT_NE(domain_error_of(t{{0, 0}, nan, {0, 0}, 0}, k, c).find("trial.twist"),
+            std::string::npos);
+  const spring_stiffness<double> infinite{tangential_stiffness<double>{inf},
+                                          twisting_stiffness<double>{1}};
+  EXPECT_NE(domain_error_of(t{{1, 0}, 0, {0, 0}, 0}, infinite, c).find("springs.tangential"),
+            std::string::npos);
+  EXPECT_NE(domain_error_of(t{{1e-3, 0}, 0, {0, 0}, 0}, k, contact(0.05, inf, 0.5))
+                .find("contact.normal"),
+            std::string::npos);
+  EXPECT_NE(domain_error_of(t{{1e-3, 0}, 0, {0, 0}, 0}, k, contact(0.05, 1, nan))
+                .find("contact.friction"),
+            std::string::npos);
+  // Finite inputs whose trial force −k_t ξ overflows.
+  const spring_stiffness<double> stiff{tangential_stiffness<double>{1e300},
+                                       twisting_stiffness<double>{1}};
+  EXPECT_NE(domain_error_of(t{{1e300, 0}, 0, {0, 0}, 0}, stiff, c).find("the trial force"),
+            std::string::npos);
+  EXPECT_EQ(domain_error_of(t{{1e-3, 0}, 0, {0, 0}, 0}, k, c), "");
 }
 
 // surely_sticks is the inner triangle |F|/(μN) + |T|/(μNa⟨r⟩) ≤ 1 of the

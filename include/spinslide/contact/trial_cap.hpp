@@ -137,7 +137,7 @@ BOOST_FORCEINLINE bool trial_in_triangle(const trial_friction<Real>& f,
 // 0: none).  What could overflow on the way (the trial, the torque weight,
 // the rewritten springs) is checked here.  `Vec` has N = 2 or 3 components.
 template <int N, class Vec, class Profile>
-capped_friction<Vec, typename Profile::value_type> cap_checked(
+BOOST_FORCEINLINE capped_friction<Vec, typename Profile::value_type> cap_checked(
     const Profile& profile, const checked_trial<typename Profile::value_type>& in,
     const trial_friction<typename Profile::value_type>& friction,
     const spring_stiffness<typename Profile::value_type>& springs,
@@ -214,6 +214,42 @@ capped_friction<Vec, typename Profile::value_type> cap_checked(
   return out;
 }
 
+// cap_trial_state where its one test of good arguments failed: the checks
+// one by one report the first bad argument; where every one is good (a
+// trial that overflowed), the cap reports that.  Out of line: never on a
+// good contact's path.
+template <int N, class Vec, class Profile>
+BOOST_NOINLINE capped_friction<Vec, typename Profile::value_type> trial_cap_errors(
+    const Profile& profile, const checked_trial<typename Profile::value_type>& in,
+    const trial_friction<typename Profile::value_type>& friction,
+    const spring_stiffness<typename Profile::value_type>& springs,
+    const force_contact<typename Profile::value_type>& contact,
+    const curve_point<typename Profile::value_type>& start, const char* function) {
+  using Real = typename Profile::value_type;
+  const typename Profile::policy_type pol;
+  const Real kt = springs.tangential.value, kw = springs.twisting.value;
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  bool bad = false;
+  auto check = [&](const char* name, Real x, argument_rule rule) {
+    bad = any_reported(checked(function, name, x, rule, pol)) || bad;
+  };
+  for (const Real x : in.spring) check("trial.displacement", x, argument_rule::finite);
+  for (const Real x : in.damping) check("trial.damping_force", x, argument_rule::finite);
+  check("trial.twist", in.twist, argument_rule::finite);
+  check("trial.damping_torque", in.damping_torque, argument_rule::finite);
+  check("springs.tangential", kt, argument_rule::finite_positive);
+  check("springs.twisting", kw, argument_rule::finite_positive);
+  const patch_values<Real> patch = checked_patch(function, contact, pol);
+  bad = any_reported(patch.radius, patch.normal, patch.friction) || bad;
+  check("start.ratio", start.ratio, argument_rule::non_negative);
+  if (bad) {
+    capped_friction<Vec, Real> out{{Vec{}, nan, false, nan, start}, Vec{}, nan};
+    for (Vec* v : {&out.force, &out.displacement}) write<N>(*v, vector3<Real>{nan, nan, nan});
+    return out;
+  }
+  return cap_checked<N, Vec>(profile, in, friction, springs, patch, start, function);
+}
+
 }  // namespace detail
 
 /// Whether a DEM contact's trial surely sticks: its trial force −k_t ξ + F_d
@@ -267,9 +303,6 @@ capped_friction<Vec, typename Profile::value_type> cap_trial_state(
                 "C arrays");
   static const char* function =
       "spinslide::cap_trial_state<%1%>(profile, trial, springs, contact, start)";
-  using detail::argument_rule;
-  using detail::checked;
-  const typename Profile::policy_type pol;
   detail::checked_trial<Real> in{detail::read<n, Real>(trial.displacement),
                                  detail::read<n, Real>(trial.damping_force), trial.twist,
                                  trial.damping_torque};
@@ -287,26 +320,14 @@ capped_friction<Vec, typename Profile::value_type> cap_trial_state(
   const Real kt = springs.tangential.value, kw = springs.twisting.value;
   const Real a = contact.radius.value, normal = contact.normal.value;
   const Real mu = contact.friction.value;
-  // One test for good arguments; where it fails, the checks one by one
-  // report the first bad one.
-  if (!(detail::all_finite(in.spring[0], in.spring[1], in.spring[2], in.damping[0], in.damping[1],
-                           in.damping[2], in.twist, in.damping_torque, kt, kw, a, normal, mu) &&
-        kt > 0 && kw > 0 && a > 0 && normal >= 0 && mu >= 0 && start.ratio >= 0)) {
-    for (const Real x : in.spring)
-      checked(function, "trial.displacement", x, argument_rule::finite, pol);
-    for (const Real x : in.damping)
-      checked(function, "trial.damping_force", x, argument_rule::finite, pol);
-    checked(function, "trial.twist", in.twist, argument_rule::finite, pol);
-    checked(function, "trial.damping_torque", in.damping_torque, argument_rule::finite, pol);
-    checked(function, "springs.tangential", kt, argument_rule::finite_positive, pol);
-    checked(function, "springs.twisting", kw, argument_rule::finite_positive, pol);
-    detail::checked_patch(function, contact, pol);
-    checked(function, "start.ratio", start.ratio, argument_rule::non_negative, pol);
-    capped_friction<Vec, Real> out{{Vec{}, nan, false, nan, start}, Vec{}, nan};
-    for (Vec* v : {&out.force, &out.displacement})
-      detail::write<n>(*v, detail::vector3<Real>{nan, nan, nan});
-    return out;
-  }
+  // One test for good arguments, on the trial's magnitudes (finite exactly
+  // when every component of the trial is, for finite stiffnesses, unless
+  // the trial overflowed) and the scalars; where it fails, the checks one
+  // by one report the first bad one (trial_cap_errors).
+  if (!(detail::all_finite(friction.magnitude, friction.torque, kt, kw, a, normal, mu) && kt > 0 &&
+        kw > 0 && a > 0 && normal >= 0 && mu >= 0 && start.ratio >= 0))
+    return detail::trial_cap_errors<n, Vec>(profile, in, friction, springs, contact, start,
+                                            function);
   const spring_stiffness<Real> k{tangential_stiffness<Real>{kt}, twisting_stiffness<Real>{kw}};
   const detail::patch_values<Real> patch{a, normal, mu};
   return detail::cap_checked<n, Vec>(profile, in, friction, k, patch, start, function);

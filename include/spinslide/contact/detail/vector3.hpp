@@ -10,6 +10,7 @@
 #ifndef SPINSLIDE_CONTACT_DETAIL_VECTOR3_HPP
 #define SPINSLIDE_CONTACT_DETAIL_VECTOR3_HPP
 
+#include <boost/config.hpp>
 #include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/tools/config.hpp>
 #include <boost/math/tools/precision.hpp>
@@ -72,19 +73,30 @@ Real largest_magnitude(Real x, Real y, Real z) {
   return (std::max)({fabs(x), fabs(y), fabs(z)});
 }
 
-// √(x² + y² + z²) without overflow or underflow for any finite input.
+// √(x² + y² + z²) in units of the largest |component| (vector_norm's
+// rescaled path, out of line: the common path is a sum of squares).
 template <class Real>
-Real vector_norm(Real x, Real y, Real z) {
+BOOST_NOINLINE Real rescaled_norm(Real x, Real y, Real z) {
+  BOOST_MATH_STD_USING
+  const Real m = largest_magnitude(x, y, z);
+  if (m == 0 || !(boost::math::isfinite)(m)) return m;
+  const Real a = x / m, b = y / m, c = z / m;
+  return m * sqrt(a * a + b * b + c * c);
+}
+
+// √(x² + y² + z²) without overflow or underflow for any finite input.
+// Always inlined, its rescaling apart: a call in the DEM trial cap kept its
+// caller's vectors on the stack around it (about 40 instructions a call,
+// tools/path_instructions.py).
+template <class Real>
+BOOST_FORCEINLINE Real vector_norm(Real x, Real y, Real z) {
   BOOST_MATH_STD_USING
   const Real s2 = x * x + y * y + z * z;
   // NaN only from a NaN component (std::max would drop it; found by fuzz_contact).
   if ((boost::math::isnan)(s2)) return s2;
   if (s2 > boost::math::tools::min_value<Real>() && s2 < boost::math::tools::max_value<Real>())
     return sqrt(s2);
-  const Real m = largest_magnitude(x, y, z);
-  if (m == 0 || !(boost::math::isfinite)(m)) return m;
-  const Real a = x / m, b = y / m, c = z / m;
-  return m * sqrt(a * a + b * b + c * c);
+  return rescaled_norm(x, y, z);
 }
 
 // a·n for a unit n, without overflow where the result is finite: if a
