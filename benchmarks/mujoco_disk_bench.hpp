@@ -3,7 +3,7 @@
 //
 // bench_mujoco's disk scene (engines/mujoco/examples/mujoco_disk/scene.hpp)
 // with one of three frictions, for bench_mujoco.cpp (timed) and
-// mujoco_step_instructions.cpp (counted): MuJoCo's own (condim 4, elliptic),
+// engines/mujoco/tests/step_instructions.cpp (counted): MuJoCo's own (condim 4, elliptic),
 // none (condim 1), or spinslide's coupled pair (condim 1 and
 // spinslide::mujoco::coupled_friction).
 #ifndef SPINSLIDE_BENCHMARKS_MUJOCO_DISK_BENCH_HPP

@@ -10,9 +10,13 @@ deterministic, where timings move with the machine's load.
 
 DRIVER is tools/path_instructions.cpp built with g++ -O3 -DNDEBUG
 -march=x86-64 -mtune=generic (the CMake target path_instructions does
-that).  One run of it under callgrind dumps each case's count; this script
-subtracts the bare loop ("loop") and divides by the calls, and gives each
-path as a multiple of the same profile's force_torque in the same type.
+that), or a driver of the same kind: the LAMMPS plugin's law
+(engines/lammps/tests/law_instructions.cpp) or MuJoCo's steps
+(engines/mujoco/tests/step_instructions.cpp).  One run of it under
+callgrind dumps each case's count; this script subtracts the bare loop
+("loop") and divides by the calls, and gives each path as a multiple of its
+unit (unit_of): the same profile's force_torque in the same type, or for an
+engine's step the same scene's step with the engine's own friction.
 
 With --budgets, every path must have a line in FILE (path, goal, budget:
 multiples of force_torque) and is checked against its budget with 10 %
@@ -72,11 +76,15 @@ def run(driver):
 
 def unit_of(case):
     """The case that is the unit of `case`: the same profile's force_torque,
-    and for a flat patch's impulse law (issue 42: ≤ 8× its wrench) the
-    rectangle's uniform wrench."""
-    path, profile, real = case.split(".")[:3]
+    for a flat patch's impulse law (issue 42: ≤ 8× its wrench) the
+    rectangle's uniform wrench, and for an engine's step with spinslide
+    ("mujoco_step.SCENE.double.ours") the same scene's step with the
+    engine's own friction (".native"); None for a unit itself."""
+    path, profile, real, *mode = case.split(".")
     if path == "patch_impulse":
         return "patch_wrench.disk.double.uniform"
+    if path == "mujoco_step":
+        return None if mode == ["native"] else f"{path}.{profile}.{real}.native"
     return f"force_torque.{profile}.{real}" if path != "force_torque" else None
 
 
@@ -93,18 +101,20 @@ def read_budgets(path):
     return budgets
 
 
-MODES = ("warm", "spread", "cold", "sticking", "uniform", "linear", "construction")
+MODES = ("warm", "spread", "cold", "sticking", "uniform", "linear", "construction", "ours")
 
 
 def markdown(counts):
-    """One row per path, profile and type; per mode, instructions (× force_torque)."""
-    print("| path | profile | type | unit | " + " | ".join(MODES) + " |")
-    print("| --- | --- | --- | ---: | " + " | ".join("---:" for _ in MODES) + " |")
-    rows = sorted({tuple(c.split(".")[:3]) for c in counts if not c.startswith("force_torque.")})
+    """One row per path, profile and type; per mode, instructions (× its unit)."""
+    measured = [c for c in counts if unit_of(c)]
+    modes = [m for m in MODES if any(c.endswith("." + m) for c in measured)]
+    print("| path | profile | type | unit | " + " | ".join(modes) + " |")
+    print("| --- | --- | --- | ---: | " + " | ".join("---:" for _ in modes) + " |")
+    rows = sorted({tuple(c.split(".")[:3]) for c in measured})
     for path, profile, real in rows:
-        unit = counts[unit_of(next(c for c in counts if c.startswith(f"{path}.{profile}.{real}.")))]
+        unit = counts[unit_of(next(c for c in measured if c.startswith(f"{path}.{profile}.{real}.")))]
         cells = []
-        for m in MODES:
+        for m in modes:
             n = counts.get(f"{path}.{profile}.{real}.{m}")
             cells.append("" if n is None else f"{n:.0f} ({n / unit:.1f}×)")
         print(f"| {path} | {profile} | {real} | {unit:.0f} | " + " | ".join(cells) + " |")
