@@ -30,6 +30,8 @@
 #include "pair.h"
 #include "spinslide_contact.h"
 
+#include <boost/config.hpp>
+
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -70,15 +72,19 @@ class PairGranularSpinslide : public Pair {
   void allocate();
   void read_type_pair(FILE* fp, int i, int j);
   spinslide_lammps::ContactLaw read_law(int narg, char** arg, double& cutoff);
-  spinslide_lammps::ContactState contact_state(int i, int j, double r) const;
-  void apply_forces(int i, int j, const spinslide_lammps::ContactLaw& law,
-                    const spinslide_lammps::ContactState& state,
-                    const spinslide_lammps::ContactForce& cf, bool on_j, double fij[3]);
+  // A touching pair's path, always inlined into compute() (and single()),
+  // as stock's pair granular computes it all in its loop: defined in
+  // pair_granular_spinslide_compute.cpp, the one file that calls them.
+  BOOST_FORCEINLINE spinslide_lammps::ContactState contact_state(int i, int j, double r) const;
+  BOOST_FORCEINLINE void apply_forces(int i, int j, const spinslide_lammps::ContactLaw& law,
+                                      const spinslide_lammps::ContactState& state,
+                                      const spinslide_lammps::ContactForce& cf, bool on_j,
+                                      double fij[3]);
   const spinslide_lammps::ContactLaw& contact_law(int itype, int jtype) const;
   spinslide_lammps::ContactLaw& law_of(int itype, int jtype);
   spinslide_lammps::LegacyLaw& legacy_of(int itype, int jtype);
-  bool one_pair(int i, int j, int& touch, double* history, bool advance,
-                spinslide_lammps::ContactForce& cf, double fij[3]);
+  BOOST_FORCEINLINE bool one_pair(int i, int j, int& touch, double* history, bool advance,
+                                  spinslide_lammps::ContactForce& cf, double fij[3]);
   spinslide_lammps::LegacyForce legacy_contact(int i, int j,
                                                const spinslide_lammps::LegacyLaw& legacy,
                                                double* history, bool advance) const;
