@@ -29,6 +29,7 @@
 #include <spinslide/contact/joint_pairs.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -64,13 +65,14 @@ class constraint_hessian {
     const auto nv = static_cast<std::size_t>(model_->nv);
     std::copy(b, b + nv, x);
     transposed_solve(x);
-    for (std::size_t i = 0; i < nv; ++i) x[i] *= inverse_diagonal_[i];
+    for (std::size_t i = 0; i < nv; ++i) x[i] *= root_inverse_[i] * root_inverse_[i];
     lower_solve(x);
   }
 
   /// W = J H⁻¹ Jᵀ into `w`, J the pairs' rows: `rows[k]` points to pair k's
   /// three rows (t1, t2, spin; nv entries each, row after row); after
-  /// factor().  With H = LᵀDL, W = YᵀD⁻¹Y for Y = L⁻ᵀJᵀ: half a solve per row.
+  /// factor().  With H = LᵀDL, W = YᵀY for Y = D^(−1/2) L⁻ᵀJᵀ: half a solve
+  /// per row.
   void inverse_mass(const std::vector<const double*>& rows, pair_coupling& w) {
     const auto nv = static_cast<std::size_t>(model_->nv);
     const std::size_t n = rows.size();
@@ -86,12 +88,8 @@ class constraint_hessian {
         }
         std::copy(from, from + nv, y);
         transposed_solve(y);
+        for (std::size_t i = 0; i < nv; ++i) y[i] *= root_inverse_[i];
       }
-    if (tree_) {
-      scaled_.assign(solved_.begin(), solved_.end());
-      for (std::size_t c = 0; c < 3 * n; ++c)
-        for (std::size_t i = 0; i < nv; ++i) scaled_[c * nv + i] *= inverse_diagonal_[i];
-    }
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < n; ++j)
         w.at(i, j) = block(tree_ ? &solved_[3 * i * nv] : rows[i], j);
@@ -133,8 +131,9 @@ class constraint_hessian {
         h[ki] = lki;
       }
     }
-    inverse_diagonal_.resize(static_cast<std::size_t>(nv));
-    for (int k = 0; k < nv; ++k) inverse_diagonal_[static_cast<std::size_t>(k)] = 1 / h[address[k]];
+    root_inverse_.resize(static_cast<std::size_t>(nv));
+    for (int k = 0; k < nv; ++k)
+      root_inverse_[static_cast<std::size_t>(k)] = 1 / std::sqrt(h[address[k]]);
     return true;
   }
 
@@ -225,17 +224,15 @@ class constraint_hessian {
   }
 
   // W_ij = J_i (H⁻¹ J_jᵀ) from the solved columns (dense H: `rows` are
-  // pair i's rows), or (L⁻ᵀJ_iᵀ)ᵀ D⁻¹ (L⁻ᵀJ_jᵀ) (tree: `rows` are pair i's
-  // solved rows, against pair j's scaled by D⁻¹).
+  // pair i's rows), or Y_iᵀY_j (tree: `rows` are pair i's solved rows).
   pair_coupling::block block(const double* rows, std::size_t j) const {
     const auto nv = static_cast<std::size_t>(model_->nv);
-    const std::vector<double>& against = tree_ ? scaled_ : solved_;
     pair_coupling::block out{};
     for (std::size_t a = 0; a < 3; ++a)
       for (std::size_t b = 0; b < 3; ++b) {
         double sum = 0;
         for (std::size_t q = 0; q < nv; ++q)
-          sum += rows[a * nv + q] * against[(3 * j + b) * nv + q];
+          sum += rows[a * nv + q] * solved_[(3 * j + b) * nv + q];
         out[a][b] = sum;
       }
     return out;
@@ -245,8 +242,8 @@ class constraint_hessian {
   std::vector<double> hessian_, solved_, row_;
   std::vector<std::size_t> nonzero_;  // the nonzero columns of row_
   // The tree's form: H in M's layout, then L (below the diagonals) and D;
-  // 1/D; the solved rows scaled by 1/D; the chain test's marks.
-  std::vector<double> tree_hessian_, inverse_diagonal_, scaled_;
+  // D^(−1/2); the chain test's marks.
+  std::vector<double> tree_hessian_, root_inverse_;
   std::vector<std::uint64_t> mark_;
   std::uint64_t stamp_ = 0;  // one per chain test: never wraps in a run
   bool tree_ = false;
