@@ -21,7 +21,10 @@
 #      not compile; their tests compile them with -DMISUSE=n), today tests/*.cpp and tests/reference/*.cpp,
 #      with the compile commands of a clang++ Debug configuration of the
 #      project (CMAKE_EXPORT_COMPILE_COMMANDS=ON, configured here in
-#      BUILD_DIR; nothing is built).  A test source missing from
+#      BUILD_DIR; nothing is built).  Sources with the same command go as
+#      unity translation units of up to 12 (tools/lint_unity.py: why, and
+#      which sources stay alone); one that does not compile is linted member
+#      by member.  A test source missing from
 #      compile_commands.json (not built by CMake) fails the step.  These also report findings in the library's headers that
 #      only the tests' template instantiations reach.
 #    - the LAMMPS plugin's sources, engines/lammps/*.cpp, with the headers of
@@ -140,15 +143,26 @@ for f in python/src/*.cpp; do
     echo "lint: skipped $f: the Python package is not configured in $build (docs/python.md)"
   fi
 done
+configured_tests=()
 for f in "${test_sources[@]}"; do
   if grep -qF "\"file\": \"$root/$f\"" "$db"; then
-    joblist+=("$f")
+    configured_tests+=("$f")
   elif [[ "$f" == engines/* ]]; then
     echo "lint: skipped $f: its engine is not installed (docs/engines.md)"
   else
     missing+=("$f")
   fi
 done
+
+# The test sources that share a compile command go to clang-tidy as unity
+# translation units of up to 12 (tools/lint_unity.py says how and why: the
+# declarations of Boost and GoogleTest are matched once per unity source, not
+# once per test source); the rest, one by one.
+unity_dir="$out/unity"
+if [ "${#configured_tests[@]}" -gt 0 ]; then
+  mapfile -t test_jobs < <(printf '%s\n' "${configured_tests[@]}" | python3 "$root/tools/lint_unity.py" "$db" "$unity_dir")
+  joblist+=("${test_jobs[@]}")
+fi
 
 # The LAMMPS plugin's sources (engines/lammps/*.cpp; issue 28), with the
 # headers of the LAMMPS source tree that engines/lammps/build_lammps.sh
@@ -170,20 +184,41 @@ else
 fi
 
 lint_one() {
-  local job="$1" log name
+  local job="$1" log name rc member members
   name="$(echo "$job" | tr '/:+' '__p')"
   log="$LINT_OUT/$name.log"
   case "$job" in
     headers:*)
       "$LINT_TIDY" --quiet "$LINT_OUT/all_headers.cpp" -- -x c++ "-std=${job#headers:}" \
-        -I"$LINT_ROOT/include" >"$log" 2>&1 ;;
+        -I"$LINT_ROOT/include" >"$log" 2>&1
+      rc=$? ;;
     plugin:*)
       # shellcheck disable=SC2086  # the flags are words
-      "$LINT_TIDY" --quiet "$LINT_ROOT/${job#plugin:}" -- $LINT_PLUGIN_FLAGS >"$log" 2>&1 ;;
+      "$LINT_TIDY" --quiet "$LINT_ROOT/${job#plugin:}" -- $LINT_PLUGIN_FLAGS >"$log" 2>&1
+      rc=$? ;;
+    unity:*)
+      # bugprone-suspicious-include would report the unity source's own
+      # includes of its members (lint_unity.py keeps alone a source that
+      # includes an implementation file itself).
+      "$LINT_TIDY" --quiet --config-file="$LINT_ROOT/.clang-tidy" --checks=-bugprone-suspicious-include \
+        -p "$LINT_UNITY" "${job#unity:}" >"$log" 2>&1
+      rc=$?
+      if grep -q '\[clang-diagnostic-error' "$log"; then
+        # Its members do not compile together: each alone, as without unity.
+        echo "lint: ${job#unity:} does not compile as one unit ($log): its sources one by one"
+        mv "$log" "$log.unity"
+        rc=0
+        members="${job#unity:}"
+        members="${members%.cpp}.members"
+        [ -s "$members" ] || { echo "lint: no members in $members" >"$log"; rc=1; }
+        while read -r member; do
+          "$LINT_TIDY" --quiet -p "$LINT_BUILD" "$LINT_ROOT/$member" >>"$log" 2>&1 || rc=1
+        done <"$members"
+      fi ;;
     *)
-      "$LINT_TIDY" --quiet -p "$LINT_BUILD" "$LINT_ROOT/$job" >"$log" 2>&1 ;;
+      "$LINT_TIDY" --quiet -p "$LINT_BUILD" "$LINT_ROOT/$job" >"$log" 2>&1
+      rc=$? ;;
   esac
-  local rc=$?
   echo "$rc" >"$LINT_OUT/$name.rc"
   if [ "$rc" -eq 0 ]; then
     echo "lint: clang-tidy ok      $job ($SECONDS s)"
@@ -192,7 +227,7 @@ lint_one() {
   fi
 }
 export -f lint_one
-export LINT_OUT="$out" LINT_TIDY="$tidy" LINT_ROOT="$root" LINT_BUILD="$build" LINT_PLUGIN_FLAGS
+export LINT_OUT="$out" LINT_TIDY="$tidy" LINT_ROOT="$root" LINT_BUILD="$build" LINT_UNITY="$unity_dir" LINT_PLUGIN_FLAGS
 
 tidy_start=$SECONDS
 printf '%s\n' "${joblist[@]}" | xargs -P "$jobs" -n 1 bash -c 'lint_one "$1"' _
