@@ -112,30 +112,135 @@ BOOST_FORCEINLINE trial_friction<Real> trial_friction_of(const checked_trial<Rea
   return out;
 }
 
-// Whether the trial friction `f` lies in the inner triangle |F|/(μN) +
-// |T|/(μNa⟨r⟩) ≤ 1 (`top` = ⟨r⟩), by the cap's own arithmetic (cap_checked,
-// limit_projector): false, deciding nothing, for any springs or contact
-// that cap_trial_state refuses, and for a trial that is not finite (its
-// magnitudes then are not, or NaN: the comparisons fail).
+// The trial friction `f` in the limit set's units, x = |F|/(μN) and y =
+// |T|/(μNa), with the load μN and the torque weight a²k_t/k_θ, and whether
+// every one of them and of the springs and the contact is in range (k_t,
+// k_θ, a, μN and the weight > 0, N ≥ 0, x, y, μN and the weight finite).
+// Where that holds, every argument but the start is good (each is finite:
+// a non-finite k_t, k_θ, a, N or μ makes the weight or the load ∞, 0 or
+// NaN, a non-finite trial x or y), and nothing the cap computes before the
+// projection can leave the range: cap_trial_state goes straight to it.
+// Otherwise (an argument that cap_trial_state refuses, a trial that is not
+// finite, a load of 0, a quotient that overflows) the flag is false,
+// deciding nothing.
 template <class Real>
-BOOST_FORCEINLINE bool trial_in_triangle(const trial_friction<Real>& f,
-                                         const spring_stiffness<Real>& springs,
-                                         const force_contact<Real>& contact, Real top) {
+struct scaled_trial {
+  Real x, y;    // |F|/(μN), |T|/(μNa)
+  Real load;    // μN
+  Real weight;  // a²k_t/k_θ, cap_trial_state's torque weight
+  bool in_range;
+};
+template <class Real>
+BOOST_FORCEINLINE scaled_trial<Real> scaled_trial_of(const trial_friction<Real>& f,
+                                                     const spring_stiffness<Real>& springs,
+                                                     const force_contact<Real>& contact) {
   using std::fabs;
   const Real kt = springs.tangential.value, kw = springs.twisting.value;
   const Real a = contact.radius.value, normal = contact.normal.value;
   const Real load = contact.friction.value * normal;
   const Real x = f.magnitude / load, y = fabs(f.torque) / a / load;
-  const Real weight = a * a * kt / kw;  // cap_trial_state's torque weight, > 0 and finite
-  return kt > 0 && kw > 0 && a > 0 && normal >= 0 && load > 0 && weight > 0 &&
-         all_finite(x, y, load, weight) && in_sticking_triangle(x, y, top);
+  const Real weight = a * a * kt / kw;
+  return {x, y, load, weight,
+          kt > 0 && kw > 0 && a > 0 && normal >= 0 && load > 0 && weight > 0 &&
+              all_finite(x, y, load, weight)};
 }
 
-// The cap on checked inputs (cap_trial_state, spring_history_friction),
-// their trial friction `friction` given (trial_friction_of): the
-// stiffnesses finite and > 0, `patch` checked, `start` a curve point (ratio
-// 0: none).  What could overflow on the way (the trial, the torque weight,
-// the rewritten springs) is checked here.  `Vec` has N = 2 or 3 components.
+// Whether the trial friction lies in the inner triangle |F|/(μN) +
+// |T|/(μNa⟨r⟩) ≤ 1 (`top` = ⟨r⟩), by the cap's own arithmetic
+// (limit_projector): false, deciding nothing, where scaled_trial_of's flag
+// is (a trial that is not finite fails it).
+template <class Real>
+BOOST_FORCEINLINE bool trial_in_triangle(const scaled_trial<Real>& s, Real top) {
+  return s.in_range && in_sticking_triangle(s.x, s.y, top);
+}
+
+// Every output `bad` (NaN: a reported error), the start kept.
+template <int N, class Vec, class Real>
+capped_friction<Vec, Real> reported_cap(const curve_point<Real>& start, Real bad) {
+  capped_friction<Vec, Real> out{{Vec{}, bad, false, bad, start}, Vec{}, bad};
+  for (Vec* v : {&out.force, &out.displacement}) write<N>(*v, vector3<Real>{bad, bad, bad});
+  return out;
+}
+
+// The trial friction and the springs kept (a stick), with the ratio `ratio`.
+template <int N, class Vec, class Real>
+BOOST_FORCEINLINE capped_friction<Vec, Real> kept_trial(const trial_friction<Real>& trial,
+                                                        const checked_trial<Real>& in, Real ratio,
+                                                        const curve_point<Real>& start) {
+  // Field by field: a braced initializer would zero the whole result first.
+  capped_friction<Vec, Real> out;
+  write<N>(out.force, trial.force);
+  out.torque = trial.torque;
+  out.sticking = true;
+  out.ratio = ratio;
+  out.point = start;
+  write<N>(out.displacement, in.spring);
+  out.twist = in.twist;
+  return out;
+}
+
+// The first rewritten spring that is not finite, reported (report_not_finite).
+// Out of line: its names are not built on a good contact's path.
+template <class Real, class Policy>
+BOOST_NOINLINE Real rewritten_not_finite(const char* function, const vector3<Real>& spring,
+                                         Real twist, const Policy& pol) {
+  return report_not_finite(
+      function,
+      {"a rewritten spring -(F - damping)/k_t", "a rewritten spring -(F - damping)/k_t",
+       "a rewritten spring -(F - damping)/k_t", "the rewritten spring -(T - damping)/k_w"},
+      {spring[0], spring[1], spring[2], twist}, pol);
+}
+
+// A contact's capped friction from `cap`, the projection of its trial
+// friction `trial` (trial_friction_of) in the limit set's units at the load
+// μN = `load` and the radius a: the trial and the springs kept where it
+// sticks; otherwise the force's direction and the torque's sign kept, and
+// the springs rewritten to hold the result with the damping (a spring too
+// soft for the capped force, F/k beyond the largest value, is a domain
+// error).
+template <int N, class Vec, class Real, class Policy>
+BOOST_FORCEINLINE capped_friction<Vec, Real> capped_from(
+    const friction_result<Real, Real>& cap, const checked_trial<Real>& in,
+    const trial_friction<Real>& trial, const spring_stiffness<Real>& springs, Real load, Real a,
+    const curve_point<Real>& start, const char* function, const Policy& pol) {
+  if (cap.sticking) return kept_trial<N, Vec>(trial, in, cap.ratio, start);
+  const Real kt = springs.tangential.value, kw = springs.twisting.value, f = trial.magnitude;
+  const Real scale = f > 0 ? Real(cap.force * load / f) : Real(0);
+  vector3<Real> force{}, spring{};
+  for (std::size_t i = 0; i < std::size_t(N); ++i) {
+    force[i] = trial.force[i] * scale;
+    spring[i] = -(force[i] - in.damping[i]) / kt;
+  }
+  const Real torque = std::copysign(product(load, a, cap.torque), trial.torque);
+  const Real twist = -(torque - in.damping_torque) / kw;
+  if (!all_finite(spring[0], spring[1], spring[2], twist))
+    return reported_cap<N, Vec>(start, rewritten_not_finite(function, spring, twist, pol));
+  capped_friction<Vec, Real> out{
+      {Vec{}, torque, false, cap.ratio, (boost::math::isnan)(cap.ratio) ? start : cap.curve()},
+      Vec{},
+      twist};
+  write<N>(out.force, force);
+  write<N>(out.displacement, spring);
+  return out;
+}
+
+// The projection of the trial (x, y) = (|F|/(μN), |T|/(μNa)) in the torque
+// weight a²k_t/k_θ, from the curve point `start` (ratio 0: none).
+template <class Profile, class Real = typename Profile::value_type>
+BOOST_FORCEINLINE friction_result<Real, Real> project_trial(const Profile& profile, Real x, Real y,
+                                                            Real weight,
+                                                            const curve_point<Real>& start) {
+  const bool from_point = start.ratio > 0 && (boost::math::isfinite)(start.force);
+  return limit_projector<Profile>(profile, {x, y}, weight)(start.ratio,
+                                                           from_point ? &start : nullptr);
+}
+
+// The cap on checked inputs (spring_history_friction, and cap_trial_state
+// where a number is out of scaled_trial_of's range), their trial friction
+// `friction` given (trial_friction_of): the stiffnesses finite and > 0,
+// `patch` checked, `start` a curve point (ratio 0: none).  What could
+// overflow on the way (the trial, the torque weight, the rewritten springs)
+// is checked here.  `Vec` has N = 2 or 3 components.
 template <int N, class Vec, class Profile>
 BOOST_FORCEINLINE capped_friction<Vec, typename Profile::value_type> cap_checked(
     const Profile& profile, const checked_trial<typename Profile::value_type>& in,
@@ -148,70 +253,30 @@ BOOST_FORCEINLINE capped_friction<Vec, typename Profile::value_type> cap_checked
   using std::fabs;
   const typename Profile::policy_type pol;
   const Real kt = springs.tangential.value, kw = springs.twisting.value;
-  const Real nan = std::numeric_limits<Real>::quiet_NaN();
-  capped_friction<Vec, Real> out{{Vec{}, Real(0), false, nan, start}, Vec{}, Real(0)};
-  auto reported = [&out](Real bad) {
-    for (Vec* v : {&out.force, &out.displacement}) write<N>(*v, vector3<Real>{bad, bad, bad});
-    out.torque = out.twist = out.ratio = bad;
-    return out;
-  };
   // The trial friction (trial_friction_of(in, springs), the caller's), which
   // must not overflow (|F| finite: each component is).
-  trial_friction<Real> trial = friction;
-  vector3<Real>& force = trial.force;
-  const Real t = trial.torque, f = trial.magnitude;
+  const Real t = friction.torque, f = friction.magnitude;
   if (!((isfinite)(f) && (isfinite)(t)))
-    return reported(report_not_finite(
-        function, {"the trial force -k_t xi + damping", "the trial torque -k_w phi + damping"},
-        {f, t}, pol));
+    return reported_cap<N, Vec>(start, report_not_finite(function,
+                                                         {"the trial force -k_t xi + damping",
+                                                          "the trial torque -k_w phi + damping"},
+                                                         {f, t}, pol));
   const Real a = patch.radius, load = patch.friction * patch.normal;
   // The magnitudes in the limit set's units.  Where they overflow, the load
   // is below 2^-1024 of the trial: the exact cap is as far below it, zero
   // to the trial's precision, and is taken as zero (a contact coming apart).
   const Real x = f / load, y = fabs(t) / a / load;
-  friction_result<Real, Real> cap{0, 0, f == 0 && t == 0, nan};
+  friction_result<Real, Real> cap{0, 0, f == 0 && t == 0, std::numeric_limits<Real>::quiet_NaN()};
   if (load > 0 && (isfinite)(x) && (isfinite)(y)) {
     Real weight = a * a * kt / kw;
     if (!(weight > 0 && (isfinite)(weight))) {  // a² alone out of range, or the whole
       weight = checked(function, "the torque weight a^2 k_t/k_w", Real(product(a, a, kt) / kw),
                        argument_rule::finite_positive, pol);
-      if (any_reported(weight)) return reported(weight);
+      if (any_reported(weight)) return reported_cap<N, Vec>(start, weight);
     }
-    const bool from_point = start.ratio > 0 && (isfinite)(start.force);
-    cap = limit_projector<Profile>(profile, {x, y}, weight)(start.ratio,
-                                                            from_point ? &start : nullptr);
+    cap = project_trial(profile, x, y, weight, start);
   }
-  out.sticking = cap.sticking;
-  out.ratio = cap.ratio;
-  if (cap.sticking) {
-    out.torque = t;
-    out.twist = in.twist;
-    write<N>(out.force, force);
-    write<N>(out.displacement, in.spring);
-    return out;
-  }
-  if (!(boost::math::isnan)(cap.ratio)) out.point = cap.curve();
-  // The force's direction and the torque's sign are kept; the springs
-  // rewritten to hold the result with the damping (a spring too soft for
-  // the capped force, F/k beyond the largest value, is a domain error).
-  const Real scale = f > 0 ? Real(cap.force * load / f) : Real(0);
-  vector3<Real> spring{};
-  for (std::size_t i = 0; i < std::size_t(N); ++i) {
-    force[i] *= scale;
-    spring[i] = -(force[i] - in.damping[i]) / kt;
-  }
-  out.torque = std::copysign(product(load, a, cap.torque), t);
-  out.twist = -(out.torque - in.damping_torque) / kw;
-  if (!((isfinite)(spring[0]) && (isfinite)(spring[1]) && (isfinite)(spring[2]) &&
-        (isfinite)(out.twist)))
-    return reported(report_not_finite(
-        function,
-        {"a rewritten spring -(F - damping)/k_t", "a rewritten spring -(F - damping)/k_t",
-         "a rewritten spring -(F - damping)/k_t", "the rewritten spring -(T - damping)/k_w"},
-        {spring[0], spring[1], spring[2], out.twist}, pol));
-  write<N>(out.force, force);
-  write<N>(out.displacement, spring);
-  return out;
+  return capped_from<N, Vec>(cap, in, friction, springs, load, a, start, function, pol);
 }
 
 // cap_trial_state where its one test of good arguments failed: the checks
@@ -228,7 +293,6 @@ BOOST_NOINLINE capped_friction<Vec, typename Profile::value_type> trial_cap_erro
   using Real = typename Profile::value_type;
   const typename Profile::policy_type pol;
   const Real kt = springs.tangential.value, kw = springs.twisting.value;
-  const Real nan = std::numeric_limits<Real>::quiet_NaN();
   bool bad = false;
   auto check = [&](const char* name, Real x, argument_rule rule) {
     bad = any_reported(checked(function, name, x, rule, pol)) || bad;
@@ -242,11 +306,7 @@ BOOST_NOINLINE capped_friction<Vec, typename Profile::value_type> trial_cap_erro
   const patch_values<Real> patch = checked_patch(function, contact, pol);
   bad = any_reported(patch.radius, patch.normal, patch.friction) || bad;
   check("start.ratio", start.ratio, argument_rule::non_negative);
-  if (bad) {
-    capped_friction<Vec, Real> out{{Vec{}, nan, false, nan, start}, Vec{}, nan};
-    for (Vec* v : {&out.force, &out.displacement}) write<N>(*v, vector3<Real>{nan, nan, nan});
-    return out;
-  }
+  if (bad) return reported_cap<N, Vec>(start, std::numeric_limits<Real>::quiet_NaN());
   return cap_checked<N, Vec>(profile, in, friction, springs, patch, start, function);
 }
 
@@ -276,8 +336,9 @@ bool surely_sticks(const Profile& profile,
   const detail::checked_trial<Real> in{detail::read<n, Real>(trial.displacement),
                                        detail::read<n, Real>(trial.damping_force), trial.twist,
                                        trial.damping_torque};
-  return detail::trial_in_triangle(detail::trial_friction_of<n>(in, springs), springs, contact,
-                                   profile.mean_radius());
+  return detail::trial_in_triangle(
+      detail::scaled_trial_of(detail::trial_friction_of<n>(in, springs), springs, contact),
+      profile.mean_radius());
 }
 
 /// The trial state `trial` of a DEM contact capped on `profile`'s limit set
@@ -306,16 +367,19 @@ capped_friction<Vec, typename Profile::value_type> cap_trial_state(
   detail::checked_trial<Real> in{detail::read<n, Real>(trial.displacement),
                                  detail::read<n, Real>(trial.damping_force), trial.twist,
                                  trial.damping_torque};
-  const Real nan = std::numeric_limits<Real>::quiet_NaN();
-  // First the trial in the inner triangle, as surely_sticks decides it (on
-  // good arguments only; a bad one fails it): the trial is kept.
   const detail::trial_friction<Real> friction = detail::trial_friction_of<n>(in, springs);
-  if (start.ratio >= 0 &&
-      detail::trial_in_triangle(friction, springs, contact, profile.mean_radius())) {
-    capped_friction<Vec, Real> out{{Vec{}, friction.torque, true, nan, start}, Vec{}, in.twist};
-    detail::write<n>(out.force, friction.force);
-    detail::write<n>(out.displacement, in.spring);
-    return out;
+  const detail::scaled_trial<Real> scaled = detail::scaled_trial_of(friction, springs, contact);
+  // First the trial in the inner triangle, as surely_sticks decides it (on
+  // numbers in range only): the trial is kept.
+  if (start.ratio >= 0 && detail::trial_in_triangle(scaled, profile.mean_radius()))
+    return detail::kept_trial<n, Vec>(friction, in, std::numeric_limits<Real>::quiet_NaN(), start);
+  // The common contact: every number in range and a good start.
+  if (scaled.in_range && start.ratio >= 0) {
+    const friction_result<Real, Real> cap =
+        detail::project_trial(profile, scaled.x, scaled.y, scaled.weight, start);
+    return detail::capped_from<n, Vec>(cap, in, friction, springs, scaled.load,
+                                       contact.radius.value, start, function,
+                                       typename Profile::policy_type());
   }
   const Real kt = springs.tangential.value, kw = springs.twisting.value;
   const Real a = contact.radius.value, normal = contact.normal.value;
