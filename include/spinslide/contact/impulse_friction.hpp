@@ -30,6 +30,7 @@
 #include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/detail/impulse_frame.hpp>
 #include <spinslide/contact/detail/impulse_in_frame.hpp>
+#include <spinslide/contact/detail/sticking_triangle.hpp>
 #include <spinslide/contact/limit_set.hpp>
 #include <spinslide/contact/planar_metric.hpp>
 

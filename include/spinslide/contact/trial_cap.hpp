@@ -30,6 +30,7 @@
 #include <spinslide/base/friction_result.hpp>
 #include <spinslide/contact/contact_inputs.hpp>
 #include <spinslide/contact/detail/matrix3.hpp>
+#include <spinslide/contact/detail/sticking_triangle.hpp>
 #include <spinslide/contact/detail/vector3.hpp>
 #include <spinslide/contact/limit_set.hpp>
 
