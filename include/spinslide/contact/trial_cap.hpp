@@ -370,12 +370,13 @@ capped_friction<Vec, typename Profile::value_type> cap_trial_state(
                                  trial.damping_torque};
   const detail::trial_friction<Real> friction = detail::trial_friction_of<n>(in, springs);
   const detail::scaled_trial<Real> scaled = detail::scaled_trial_of(friction, springs, contact);
-  // First the trial in the inner triangle, as surely_sticks decides it (on
-  // numbers in range only): the trial is kept.
-  if (start.ratio >= 0 && detail::trial_in_triangle(scaled, profile.mean_radius()))
-    return detail::kept_trial<n, Vec>(friction, in, std::numeric_limits<Real>::quiet_NaN(), start);
-  // The common contact: every number in range and a good start.
+  // The common contact: every number in range and a good start.  First the
+  // trial in the inner triangle, as surely_sticks decides it: the trial is
+  // kept.
   if (scaled.in_range && start.ratio >= 0) {
+    if (detail::in_sticking_triangle(scaled.x, scaled.y, profile.mean_radius()))
+      return detail::kept_trial<n, Vec>(friction, in, std::numeric_limits<Real>::quiet_NaN(),
+                                        start);
     const friction_result<Real, Real> cap =
         detail::project_trial(profile, scaled.x, scaled.y, scaled.weight, start);
     return detail::capped_from<n, Vec>(cap, in, friction, springs, scaled.load,

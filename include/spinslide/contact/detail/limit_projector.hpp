@@ -167,7 +167,6 @@ class limit_projector {
   // profile's own values.  A NaN 𝓕″ gives Newton's step (warm_step_from); any
   // other NaN or ∞ a step the test below refuses, or 0 (an infinite slope).
   void step_from_point(const curve_point<Real>& c, Real& start) const {
-    using std::fabs;
     warm_sample a{{c.ratio, {c.force, c.torque}, Real(0), c.slope}, c.curvature};
     a.h = (x_ - a.ft.force) - w_ * a.eps * (y_ - a.ft.torque);
     const warm_step s = warm_step_from(a);
